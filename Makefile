@@ -1,0 +1,79 @@
+# carom: a 2D rigid-body physics library in C99.
+#   make          library (build/libcarom.so, build/libcarom.a)
+#   make check    every test under Valgrind
+#   make run      the demo (or, without a display, a headless render)
+# Output goes to $(BUILD); `make BUILD=other` keeps separate trees.
+
+BUILD   ?= build
+CC      ?= cc
+OPT     ?= -O2 -g
+WARN    := -std=c99 -Wall -Wextra -pedantic -Wstrict-prototypes -Wmissing-prototypes
+ifdef CI
+WARN    += -Werror
+endif
+CFLAGS  ?=
+CPPFLAGS += -Iinclude -MMD -MP
+LDLIBS_LIB := -lm
+
+VERSION_MAJOR := 0
+VERSION       := 0.1.0
+SONAME  := libcarom.so.$(VERSION_MAJOR)
+SO_REAL := $(BUILD)/libcarom.so.$(VERSION)
+
+LIB_SRC := $(sort $(wildcard lib/*.c))
+LIB_OBJ := $(LIB_SRC:lib/%.c=$(BUILD)/lib/%.o)
+LIB_PIC := $(LIB_SRC:lib/%.c=$(BUILD)/pic/%.o)
+
+TEST_SRC := $(sort $(wildcard tests/test_*.c))
+TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+VALGRIND := valgrind -q --leak-check=full --show-leak-kinds=definite,indirect,possible --errors-for-leak-kinds=definite,indirect,possible --error-exitcode=1
+
+.PHONY: all lib check tests deps-check clean run bench
+all: lib
+
+lib: $(BUILD)/libcarom.a $(BUILD)/libcarom.so
+
+$(BUILD)/lib/%.o: lib/%.c
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) -Ilib $(WARN) $(OPT) $(CFLAGS) -fvisibility=hidden -c $< -o $@
+
+$(BUILD)/pic/%.o: lib/%.c
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) -Ilib $(WARN) $(OPT) $(CFLAGS) -fvisibility=hidden -fPIC -c $< -o $@
+
+$(BUILD)/libcarom.a: $(LIB_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(SO_REAL): $(LIB_PIC)
+	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,--no-undefined $(LDFLAGS) -o $@ $^ $(LDLIBS_LIB)
+
+$(BUILD)/libcarom.so: $(SO_REAL)
+	ln -sf libcarom.so.$(VERSION) $(BUILD)/$(SONAME)
+	ln -sf $(SONAME) $@
+
+# ---------------------------------------------------------------- tests
+deps-check:
+	@tools/ensure-deps build check
+
+tests: $(TEST_BIN)
+
+$(BUILD)/tests/%.o: tests/%.c
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) -Ilib -Itests $(WARN) $(OPT) $(CFLAGS) -c $< -o $@
+
+$(BUILD)/tests/test_%: $(BUILD)/tests/test_%.o $(BUILD)/tests/support.o $(BUILD)/libcarom.a
+	$(CC) $(LDFLAGS) -o $@ $^ -lcmocka -lm
+
+check: deps-check
+	@$(MAKE) --no-print-directory tests lib
+	@tools/run-tests "$(VALGRIND)" $(TEST_BIN)
+
+clean:
+	rm -rf $(BUILD)
+
+-include $(wildcard $(BUILD)/*/*.d)
+
+# Each part of the project beyond the library and its tests (runner, demo,
+# benchmarks, bindings, ...) keeps its rules in a fragment of its own.
+include $(sort $(wildcard mk/*.mk))

@@ -1,0 +1,356 @@
+/*
+ * carom: a 2D rigid-body physics library in C99 with a stable C ABI.
+ *
+ * Conventions: double precision everywhere, radians, counter-clockwise
+ * positive angles, y up. SI units are suggested, never assumed.
+ *
+ * Every fallible call returns a carom_status (CAROM_OK = 0) and changes
+ * nothing when it fails. Bodies are named by carom_body_id values: a removed
+ * body's id is detected as stale (CAROM_ERR_STALE_BODY), never dereferenced.
+ *
+ * Structs that cross the ABI start with a `size` field that the matching
+ * *_def_init function fills in; fields are only ever appended.
+ */
+#ifndef CAROM_H
+#define CAROM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32) && defined(CAROM_BUILD_SHARED)
+#define CAROM_API __declspec(dllexport)
+#elif defined(__GNUC__) || defined(__clang__)
+#define CAROM_API __attribute__((visibility("default")))
+#else
+#define CAROM_API
+#endif
+
+/* ---------------------------------------------------------------- version */
+
+#define CAROM_VERSION_MAJOR 0
+#define CAROM_VERSION_MINOR 1
+#define CAROM_VERSION_PATCH 0
+/** MAJOR * 10000 + MINOR * 100 + PATCH of the headers compiled against. */
+#define CAROM_VERSION                                                          \
+  (CAROM_VERSION_MAJOR * 10000 + CAROM_VERSION_MINOR * 100 + CAROM_VERSION_PATCH)
+
+/** The version of the library linked at run time, encoded as CAROM_VERSION. */
+CAROM_API uint32_t carom_version (void);
+
+/* ----------------------------------------------------------------- status */
+
+/** Result of every fallible call. Values are stable: new ones are appended. */
+typedef enum carom_status {
+  CAROM_OK = 0,
+  CAROM_ERR_NULL_ARGUMENT = 1,      /**< a required pointer was NULL */
+  CAROM_ERR_NOT_FINITE = 2,         /**< a number was NaN or infinite */
+  CAROM_ERR_BAD_SIZE = 3,           /**< a size or radius was zero or negative */
+  CAROM_ERR_BAD_DENSITY = 4,        /**< density was zero or negative */
+  CAROM_ERR_TOO_FEW_VERTICES = 5,   /**< a polygon needs at least 3 vertices */
+  CAROM_ERR_TOO_MANY_VERTICES = 6,  /**< more than CAROM_MAX_POLYGON_VERTICES */
+  CAROM_ERR_REPEATED_VERTEX = 7,    /**< two consecutive vertices coincide */
+  CAROM_ERR_SELF_INTERSECTING = 8,  /**< polygon edges cross each other */
+  CAROM_ERR_ZERO_AREA = 9,          /**< polygon (nearly) without area */
+  CAROM_ERR_BAD_TIME_STEP = 10,     /**< dt was zero, negative, NaN or inf */
+  CAROM_ERR_STALE_BODY = 11,        /**< body id is unknown or was removed */
+  CAROM_ERR_OUT_OF_MEMORY = 12,     /**< an allocation failed */
+  CAROM_ERR_BAD_ARGUMENT = 13,      /**< a value outside its documented range */
+  CAROM_ERR_BAD_STRUCT_SIZE = 14,   /**< a def's size field is not one we know */
+  CAROM_ERR_TOO_MANY_BODIES = 15,   /**< the world holds CAROM_MAX_BODIES */
+  CAROM_ERR_STATIC_BODY = 16,       /**< the call needs a dynamic body */
+  CAROM_ERR_SCENE_SYNTAX = 17,      /**< a scene file line is malformed */
+  CAROM_ERR_IO = 18,                /**< a file could not be read */
+} carom_status;
+
+/** A short English sentence for a status; never NULL, also for unknown codes. */
+CAROM_API const char *carom_status_string (carom_status status);
+
+/* ----------------------------------------------------------------- limits */
+
+/** Largest vertex count accepted for one polygon. */
+#define CAROM_MAX_POLYGON_VERTICES 1024
+/** Largest number of live bodies in one world (ids carry a 24-bit index). */
+#define CAROM_MAX_BODIES (1 << 24)
+
+/* -------------------------------------------------------------- allocator */
+
+/**
+ * Optional allocator. `alloc` returns NULL on failure; `free` takes what
+ * `alloc` returned (and the size that was asked for). Both get `user`.
+ */
+typedef struct carom_allocator {
+  void *(*alloc) (size_t size, void *user);
+  void (*free) (void *ptr, size_t size, void *user);
+  void *user;
+} carom_allocator;
+
+/* ------------------------------------------------------------------ world */
+
+/** A body's id: a slot index and a generation. 0 is never a valid id. */
+typedef uint64_t carom_body_id;
+#define CAROM_NULL_BODY ((carom_body_id)0)
+
+/** An opaque simulation world. All its memory is freed by destroy. */
+typedef struct carom_world carom_world;
+
+/** Narrow-phase method for pairs of convex polygons. */
+typedef enum carom_narrow_phase {
+  /** Separating axis theorem with clipped contact points (thesis 3.2.1). */
+  CAROM_NARROW_SAT = 0,
+  /** The thesis' vertex-edge method on the true outline (thesis 3.2.2). */
+  CAROM_NARROW_VERTEX_EDGE = 1,
+} carom_narrow_phase;
+
+/** World settings. Fill with carom_world_def_init, then change fields. */
+typedef struct carom_world_def {
+  uint32_t size;           /**< sizeof (carom_world_def), set by def_init */
+  double gravity_x;        /**< uniform gravity, default (0, 0) */
+  double gravity_y;
+  double restitution;      /**< default e for bodies, in [0, 1]; default 0 */
+  double friction;         /**< default Coulomb mu, >= 0; default 0 */
+  int32_t substeps;        /**< sub-steps per update, >= 1; default 1 */
+  int32_t iterations;      /**< solver iterations per sub-step, >= 1;
+                                default 8 */
+  double position_correction; /**< fraction of overlap removed per sub-step,
+                                   in [0, 1]; default 0.2 */
+  double slop;             /**< overlap allowed before correction, as a
+                                fraction of the smaller body's size (twice
+                                its area over its perimeter); default 0.01 */
+  carom_narrow_phase narrow_phase; /**< convex polygon method; default SAT */
+  carom_allocator allocator; /**< alloc == NULL means malloc/free */
+} carom_world_def;
+
+/** Fill `def` with the defaults above and set its size field. */
+CAROM_API void carom_world_def_init (carom_world_def *def);
+
+/**
+ * Create a world. `def` may be NULL for the defaults.
+ * Errors: NULL_ARGUMENT (world), BAD_STRUCT_SIZE, NOT_FINITE, BAD_ARGUMENT,
+ * OUT_OF_MEMORY. On error *world is set to NULL.
+ */
+CAROM_API carom_status carom_world_init (carom_world **world,
+                                         const carom_world_def *def);
+
+/** Destroy a world and every body in it. Safe on NULL. */
+CAROM_API void carom_world_destroy (carom_world *world);
+
+/**
+ * Advance the world by `dt` (time units, > 0 and finite): forces, collision
+ * detection, collision resolution, integration, in `substeps` sub-steps.
+ * Errors: NULL_ARGUMENT, BAD_TIME_STEP, OUT_OF_MEMORY; the world is unchanged
+ * on error.
+ */
+CAROM_API carom_status carom_world_update (carom_world *world, double dt);
+
+/** Set uniform gravity. Errors: NULL_ARGUMENT, NOT_FINITE. */
+CAROM_API carom_status carom_world_set_gravity (carom_world *world, double gx,
+                                                double gy);
+/** Read uniform gravity. */
+CAROM_API carom_status carom_world_get_gravity (const carom_world *world,
+                                                double *gx, double *gy);
+
+/** Number of live bodies (0 for NULL). */
+CAROM_API int32_t carom_world_body_count (const carom_world *world);
+
+/**
+ * Ids of the live bodies in creation order: writes up to `capacity` ids and
+ * returns how many bodies there are (call with capacity 0 to size a buffer).
+ */
+CAROM_API int32_t carom_world_get_bodies (const carom_world *world,
+                                          carom_body_id *ids, int32_t capacity);
+
+/* --------------------------------------------------------------- contacts */
+
+/**
+ * Run collision detection alone on the current positions (no resolution, no
+ * motion), replacing the contacts that carom_world_update left. Errors:
+ * NULL_ARGUMENT, OUT_OF_MEMORY.
+ */
+CAROM_API carom_status carom_world_detect (carom_world *world);
+
+/** Number of contact points found by the last update or detect. */
+CAROM_API int32_t carom_world_contact_count (const carom_world *world);
+
+/**
+ * Contact point `index` (0 <= index < count): the two bodies, the impact
+ * point, the unit normal pointing from body a to body b, and the penetration
+ * depth (negative when the bodies are apart but within the contact margin).
+ * NULL outputs are skipped. Errors: NULL_ARGUMENT, BAD_ARGUMENT (index).
+ */
+CAROM_API carom_status carom_world_get_contact (const carom_world *world,
+                                                int32_t index, carom_body_id *a,
+                                                carom_body_id *b, double *px,
+                                                double *py, double *nx,
+                                                double *ny, double *depth);
+
+/* ----------------------------------------------------------------- bodies */
+
+typedef enum carom_body_type {
+  CAROM_DYNAMIC = 0, /**< moves under forces and impulses */
+  CAROM_STATIC = 1,  /**< never moves: infinite mass (zero inverse mass) */
+} carom_body_type;
+
+/** Shape kinds, as reported by carom_body_get_shape. */
+typedef enum carom_shape_kind {
+  CAROM_SHAPE_CIRCLE = 0,
+  CAROM_SHAPE_POLYGON = 1, /**< boxes and regular polygons are polygons too */
+} carom_shape_kind;
+
+/** Body settings. Fill with carom_body_def_init, then change fields. */
+typedef struct carom_body_def {
+  uint32_t size;        /**< sizeof (carom_body_def), set by def_init */
+  carom_body_type type; /**< default CAROM_DYNAMIC */
+  double x, y;          /**< position of the centre of mass; default 0 */
+  double angle;         /**< radians, counter-clockwise; default 0 */
+  double vx, vy;        /**< linear velocity; default 0 */
+  double spin;          /**< angular velocity, rad per time unit; default 0 */
+  double density;       /**< mass per unit area, > 0; default 1 */
+  double restitution;   /**< e in [0, 1], or < 0 for the world default */
+  double friction;      /**< mu >= 0, or < 0 for the world default */
+} carom_body_def;
+
+/** Fill `def` with the defaults above and set its size field. */
+CAROM_API void carom_body_def_init (carom_body_def *def);
+
+/**
+ * Add a circle of radius `radius` centred on (def->x, def->y). Inertia
+ * m r^2 / 2. `def` may be NULL for the defaults. On success *id names the new
+ * body (id may be NULL). Errors: NULL_ARGUMENT, BAD_STRUCT_SIZE, NOT_FINITE,
+ * BAD_SIZE, BAD_DENSITY, BAD_ARGUMENT, TOO_MANY_BODIES, OUT_OF_MEMORY.
+ */
+CAROM_API carom_status carom_world_add_circle (carom_world *world,
+                                               const carom_body_def *def,
+                                               double radius,
+                                               carom_body_id *id);
+
+/** Add a `width` x `height` box; inertia m (w^2 + h^2) / 12 (eq. 3.4). */
+CAROM_API carom_status carom_world_add_box (carom_world *world,
+                                            const carom_body_def *def,
+                                            double width, double height,
+                                            carom_body_id *id);
+
+/**
+ * Add a regular polygon with `n` sides of length `side`, one vertex on the
+ * +x axis before rotation; inertia m l^2 / 24 (1 + 3 cot^2(pi/n)) (eq. 3.6).
+ * Errors as carom_world_add_circle, plus TOO_FEW_VERTICES (n < 3) and
+ * TOO_MANY_VERTICES.
+ */
+CAROM_API carom_status carom_world_add_regular (carom_world *world,
+                                                const carom_body_def *def,
+                                                int32_t n, double side,
+                                                carom_body_id *id);
+
+/**
+ * Add a simple polygon, convex or concave, from `count` vertices given as
+ * x0, y0, x1, y1, ... in either winding. The vertices are copied and
+ * re-expressed about the polygon's centroid, which is placed at
+ * (def->x, def->y); inertia by signed sub-triangles (eq. 3.13, 3.14).
+ * Errors as carom_world_add_regular, plus REPEATED_VERTEX, ZERO_AREA and
+ * SELF_INTERSECTING.
+ */
+CAROM_API carom_status carom_world_add_polygon (carom_world *world,
+                                                const carom_body_def *def,
+                                                const double *xy,
+                                                int32_t count,
+                                                carom_body_id *id);
+
+/** Remove a body; its id becomes stale. Errors: NULL_ARGUMENT, STALE_BODY. */
+CAROM_API carom_status carom_world_remove_body (carom_world *world,
+                                                carom_body_id id);
+
+/** CAROM_OK if `id` names a live body of `world`, else STALE_BODY. */
+CAROM_API carom_status carom_body_check (const carom_world *world,
+                                         carom_body_id id);
+
+/* Body state. Getters write through non-NULL pointers (a NULL output is
+ * skipped); all return NULL_ARGUMENT for a NULL world, STALE_BODY for a bad
+ * id, and setters NOT_FINITE for a non-finite value. Setting the position or
+ * velocity of a static body returns STATIC_BODY except for the position. */
+CAROM_API carom_status carom_body_get_position (const carom_world *world,
+                                                carom_body_id id, double *x,
+                                                double *y);
+CAROM_API carom_status carom_body_set_position (carom_world *world,
+                                                carom_body_id id, double x,
+                                                double y);
+CAROM_API carom_status carom_body_get_angle (const carom_world *world,
+                                             carom_body_id id, double *angle);
+CAROM_API carom_status carom_body_set_angle (carom_world *world,
+                                             carom_body_id id, double angle);
+CAROM_API carom_status carom_body_get_velocity (const carom_world *world,
+                                                carom_body_id id, double *vx,
+                                                double *vy);
+CAROM_API carom_status carom_body_set_velocity (carom_world *world,
+                                                carom_body_id id, double vx,
+                                                double vy);
+CAROM_API carom_status carom_body_get_spin (const carom_world *world,
+                                            carom_body_id id, double *spin);
+CAROM_API carom_status carom_body_set_spin (carom_world *world,
+                                            carom_body_id id, double spin);
+
+/** Mass (0 for static bodies), inertia about the centre of mass (0 for
+ * static bodies), and area. */
+CAROM_API carom_status carom_body_get_mass (const carom_world *world,
+                                            carom_body_id id, double *mass,
+                                            double *inertia, double *area);
+CAROM_API carom_status carom_body_get_type (const carom_world *world,
+                                            carom_body_id id,
+                                            carom_body_type *type);
+CAROM_API carom_status carom_body_get_shape (const carom_world *world,
+                                             carom_body_id id,
+                                             carom_shape_kind *kind,
+                                             double *radius);
+/** Restitution and friction in effect for the body (after world defaults). */
+CAROM_API carom_status carom_body_get_material (const carom_world *world,
+                                                carom_body_id id,
+                                                double *restitution,
+                                                double *friction);
+
+/**
+ * The polygon's vertices in world coordinates, counter-clockwise: writes up to
+ * `capacity` points as x0, y0, x1, y1, ... into `xy` (2 * capacity doubles)
+ * and the vertex count into *count (0 for a circle).
+ */
+CAROM_API carom_status carom_body_get_vertices (const carom_world *world,
+                                                carom_body_id id, double *xy,
+                                                int32_t capacity,
+                                                int32_t *count);
+
+/* ----------------------------------------------------------------- scenes */
+
+/** Where and why a scene failed to load. */
+typedef struct carom_scene_error {
+  uint32_t size;         /**< sizeof (carom_scene_error); set by the caller */
+  int32_t line;          /**< 1-based line of the error, 0 if none */
+  carom_status cause;    /**< the status that rejected the line */
+  char message[256];     /**< "LINE: what is wrong", NUL-terminated */
+} carom_scene_error;
+
+/**
+ * Build a new world from scene text (format: docs/scenes.md). The whole text
+ * is checked first; on any error nothing is created, *world is NULL, and
+ * `error` (may be NULL; its size field must be set) says where and why.
+ * `def` (may be NULL) supplies settings the scene does not set, including the
+ * allocator. Errors: NULL_ARGUMENT, SCENE_SYNTAX or the status a body or
+ * setting on that line was rejected with, OUT_OF_MEMORY.
+ */
+CAROM_API carom_status carom_scene_load_text (carom_world **world,
+                                              const char *text,
+                                              size_t length,
+                                              const carom_world_def *def,
+                                              carom_scene_error *error);
+
+/** carom_scene_load_text on a file's contents; IO if it cannot be read. */
+CAROM_API carom_status carom_scene_load_file (carom_world **world,
+                                              const char *path,
+                                              const carom_world_def *def,
+                                              carom_scene_error *error);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* CAROM_H */

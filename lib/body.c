@@ -1,0 +1,490 @@
+/* Bodies: creation with exact mass properties, removal, ids that detect
+ * staleness (slot index + generation, as Box2D v3), and state accessors. */
+#include "body.h"
+
+#include <string.h>
+
+#include "world.h"
+
+void bodies_init (carom_world *world)
+{
+  world->bodies = NULL;
+  world->slot_count = world->slot_cap = world->live_count = 0;
+  world->free_slots = NULL;
+  world->free_count = world->free_cap = 0;
+}
+
+void bodies_destroy (carom_world *world)
+{
+  int32_t i;
+  for (i = 0; i < world->slot_count; ++i)
+    if (world->bodies[i].alive)
+      shape_destroy (&world->bodies[i].shape, &world->allocator);
+  mem_free (&world->allocator, world->bodies, (size_t) world->slot_cap * sizeof (body));
+  mem_free (&world->allocator, world->free_slots, (size_t) world->free_cap * sizeof (int32_t));
+  bodies_init (world);
+}
+
+carom_body_id body_id_of (const carom_world *world, int32_t slot)
+{
+  return ((uint64_t) world->bodies[slot].generation << 32) | (uint64_t) (uint32_t) (slot + 1);
+}
+
+body *body_lookup (const carom_world *world, carom_body_id id)
+{
+  uint64_t index = (id & 0xffffffffu);
+  body *b;
+  if (!world || index == 0 || index > (uint64_t) world->slot_count)
+    return NULL;
+  b = &world->bodies[index - 1];
+  if (!b->alive || b->generation != (uint32_t) (id >> 32))
+    return NULL;
+  return b;
+}
+
+void body_sync (body *b)
+{
+  b->q = rot2_from_angle (b->angle);
+  if (b->shape.kind == CAROM_SHAPE_CIRCLE)
+    {
+      double r = b->shape.radius;
+      b->box_lo = v2 (b->p.x - r, b->p.y - r);
+      b->box_hi = v2 (b->p.x + r, b->p.y + r);
+    }
+  else
+    {
+      xform t;
+      int32_t i;
+      t.p = b->p;
+      t.q = b->q;
+      b->box_lo = b->box_hi = xform_apply (t, b->shape.vertices[0]);
+      for (i = 1; i < b->shape.count; ++i)
+        {
+          vec2 v = xform_apply (t, b->shape.vertices[i]);
+          b->box_lo = v2_min (b->box_lo, v);
+          b->box_hi = v2_max (b->box_hi, v);
+        }
+    }
+}
+
+/* ------------------------------------------------------------- creation */
+
+static carom_status check_def (const carom_body_def *def)
+{
+  if (def->size != sizeof (carom_body_def))
+    return CAROM_ERR_BAD_STRUCT_SIZE;
+  if (!is_finite (def->x) || !is_finite (def->y) || !is_finite (def->angle) || !is_finite (def->vx)
+      || !is_finite (def->vy) || !is_finite (def->spin) || !is_finite (def->density)
+      || !is_finite (def->restitution) || !is_finite (def->friction))
+    return CAROM_ERR_NOT_FINITE;
+  if (def->type != CAROM_DYNAMIC && def->type != CAROM_STATIC)
+    return CAROM_ERR_BAD_ARGUMENT;
+  if (def->density <= 0.0)
+    return CAROM_ERR_BAD_DENSITY;
+  if (def->restitution > 1.0)
+    return CAROM_ERR_BAD_ARGUMENT;
+  return CAROM_OK;
+}
+
+void carom_body_def_init (carom_body_def *def)
+{
+  if (!def)
+    return;
+  memset (def, 0, sizeof *def);
+  def->size = sizeof *def;
+  def->type = CAROM_DYNAMIC;
+  def->density = 1.0;
+  def->restitution = -1.0;
+  def->friction = -1.0;
+}
+
+/* Make sure a slot is free and that removing a body later cannot fail for
+ * lack of room in the free list. Changes no visible state. */
+static carom_status reserve_slot (carom_world *world)
+{
+  if (world->live_count >= CAROM_MAX_BODIES)
+    return CAROM_ERR_TOO_MANY_BODIES;
+  if (world->free_count == 0
+      && !mem_reserve (&world->allocator, (void **) &world->bodies, &world->slot_cap, world->slot_count + 1,
+                       sizeof (body)))
+    return CAROM_ERR_OUT_OF_MEMORY;
+  if (!mem_reserve (&world->allocator, (void **) &world->free_slots, &world->free_cap, world->live_count + 1,
+                    sizeof (int32_t)))
+    return CAROM_ERR_OUT_OF_MEMORY;
+  return CAROM_OK;
+}
+
+/* Place a fully built shape into a new body. Cannot fail: reserve_slot ran. */
+static carom_body_id commit_body (carom_world *world, const carom_body_def *def, const shape *s, double inertia_unit)
+{
+  int32_t slot;
+  body *b;
+  uint32_t generation;
+  if (world->free_count > 0)
+    slot = world->free_slots[--world->free_count];
+  else
+    {
+      slot = world->slot_count++;
+      world->bodies[slot].generation = 1;
+    }
+  b = &world->bodies[slot];
+  generation = b->generation;
+  memset (b, 0, sizeof *b);
+  b->generation = generation;
+  b->alive = 1;
+  b->type = def->type;
+  b->shape = *s;
+  b->p = v2 (def->x, def->y);
+  b->angle = def->angle;
+  b->restitution = def->restitution;
+  b->friction = def->friction;
+  if (def->type == CAROM_DYNAMIC)
+    {
+      b->v = v2 (def->vx, def->vy);
+      b->w = def->spin;
+      b->mass = def->density * s->area;
+      b->inertia = def->density * inertia_unit;
+      b->inv_mass = 1.0 / b->mass;
+      b->inv_inertia = 1.0 / b->inertia;
+    }
+  body_sync (b);
+  world->live_count++;
+  world->broad.dirty = 1;
+  return body_id_of (world, slot);
+}
+
+static carom_status begin_add (carom_world *world, const carom_body_def **def, carom_body_def *defaults)
+{
+  carom_status st;
+  if (!world)
+    return CAROM_ERR_NULL_ARGUMENT;
+  if (!*def)
+    {
+      carom_body_def_init (defaults);
+      *def = defaults;
+    }
+  st = check_def (*def);
+  if (st != CAROM_OK)
+    return st;
+  return reserve_slot (world);
+}
+
+carom_status carom_world_add_circle (carom_world *world, const carom_body_def *def, double radius, carom_body_id *id)
+{
+  carom_body_def defaults;
+  shape s;
+  carom_body_id new_id;
+  carom_status st = begin_add (world, &def, &defaults);
+  if (st != CAROM_OK)
+    return st;
+  if (!is_finite (radius))
+    return CAROM_ERR_NOT_FINITE;
+  if (radius <= 0.0)
+    return CAROM_ERR_BAD_SIZE;
+  shape_init_circle (&s, radius);
+  new_id = commit_body (world, def, &s, s.unit_inertia);
+  if (id)
+    *id = new_id;
+  return CAROM_OK;
+}
+
+static carom_status add_polygon_shape (carom_world *world, const carom_body_def *def, const double *xy, int32_t n,
+                                       const double *exact_unit_inertia, carom_body_id *id)
+{
+  shape s;
+  vec2 centroid;
+  carom_body_def placed = *def;
+  carom_body_id new_id;
+  carom_status st = polygon_validate (xy, n);
+  if (st != CAROM_OK)
+    return st;
+  st = shape_init_polygon (&s, &world->allocator, xy, n, &centroid);
+  if (st != CAROM_OK)
+    return st;
+  (void) centroid; /* the body's position is its centre of mass: def->x, y */
+  new_id = commit_body (world, &placed, &s, exact_unit_inertia ? *exact_unit_inertia : s.unit_inertia);
+  if (id)
+    *id = new_id;
+  return CAROM_OK;
+}
+
+carom_status carom_world_add_polygon (carom_world *world, const carom_body_def *def, const double *xy, int32_t count,
+                                      carom_body_id *id)
+{
+  carom_body_def defaults;
+  carom_status st = begin_add (world, &def, &defaults);
+  if (st != CAROM_OK)
+    return st;
+  return add_polygon_shape (world, def, xy, count, NULL, id);
+}
+
+carom_status carom_world_add_box (carom_world *world, const carom_body_def *def, double width, double height,
+                                  carom_body_id *id)
+{
+  carom_body_def defaults;
+  double xy[8], unit_inertia;
+  carom_status st = begin_add (world, &def, &defaults);
+  if (st != CAROM_OK)
+    return st;
+  if (!is_finite (width) || !is_finite (height))
+    return CAROM_ERR_NOT_FINITE;
+  if (width <= 0.0 || height <= 0.0)
+    return CAROM_ERR_BAD_SIZE;
+  xy[0] = -0.5 * width, xy[1] = -0.5 * height;
+  xy[2] = 0.5 * width, xy[3] = -0.5 * height;
+  xy[4] = 0.5 * width, xy[5] = 0.5 * height;
+  xy[6] = -0.5 * width, xy[7] = 0.5 * height;
+  /* eq. 3.4: I = m (w^2 + h^2) / 12, here per unit density (m = w h) */
+  unit_inertia = width * height * (width * width + height * height) / 12.0;
+  return add_polygon_shape (world, def, xy, 4, &unit_inertia, id);
+}
+
+carom_status carom_world_add_regular (carom_world *world, const carom_body_def *def, int32_t n, double side,
+                                      carom_body_id *id)
+{
+  carom_body_def defaults;
+  double *xy, radius, area, cot, unit_inertia;
+  int32_t i;
+  carom_status st = begin_add (world, &def, &defaults);
+  if (st != CAROM_OK)
+    return st;
+  if (n < 3)
+    return CAROM_ERR_TOO_FEW_VERTICES;
+  if (n > CAROM_MAX_POLYGON_VERTICES)
+    return CAROM_ERR_TOO_MANY_VERTICES;
+  if (!is_finite (side))
+    return CAROM_ERR_NOT_FINITE;
+  if (side <= 0.0)
+    return CAROM_ERR_BAD_SIZE;
+  xy = mem_alloc (&world->allocator, (size_t) n * 2 * sizeof (double));
+  if (!xy)
+    return CAROM_ERR_OUT_OF_MEMORY;
+  /* circumradius of a regular n-gon with side l: l / (2 sin(pi / n)) */
+  radius = side / (2.0 * sin (CAROM_PI / n));
+  for (i = 0; i < n; ++i)
+    {
+      double t = 2.0 * CAROM_PI * i / n;
+      xy[2 * i] = radius * cos (t);
+      xy[2 * i + 1] = radius * sin (t);
+    }
+  /* eq. 3.6: I = m l^2 / 24 (1 + 3 cot^2(pi / n)), with m = area at unit
+   * density; area = n l^2 / 4 cot(pi / n) */
+  cot = 1.0 / tan (CAROM_PI / n);
+  area = 0.25 * n * side * side * cot;
+  unit_inertia = area * side * side / 24.0 * (1.0 + 3.0 * cot * cot);
+  st = add_polygon_shape (world, def, xy, n, &unit_inertia, id);
+  mem_free (&world->allocator, xy, (size_t) n * 2 * sizeof (double));
+  return st;
+}
+
+carom_status carom_world_remove_body (carom_world *world, carom_body_id id)
+{
+  body *b;
+  int32_t slot;
+  if (!world)
+    return CAROM_ERR_NULL_ARGUMENT;
+  b = body_lookup (world, id);
+  if (!b)
+    return CAROM_ERR_STALE_BODY;
+  slot = (int32_t) (b - world->bodies);
+  contacts_forget_body (world, slot);
+  shape_destroy (&b->shape, &world->allocator);
+  b->alive = 0;
+  b->generation = b->generation == UINT32_MAX ? 1 : b->generation + 1;
+  world->free_slots[world->free_count++] = slot; /* room reserved at creation */
+  world->live_count--;
+  world->broad.dirty = 1;
+  return CAROM_OK;
+}
+
+carom_status carom_body_check (const carom_world *world, carom_body_id id)
+{
+  if (!world)
+    return CAROM_ERR_NULL_ARGUMENT;
+  return body_lookup (world, id) ? CAROM_OK : CAROM_ERR_STALE_BODY;
+}
+
+int32_t carom_world_body_count (const carom_world *world)
+{
+  return world ? world->live_count : 0;
+}
+
+int32_t carom_world_get_bodies (const carom_world *world, carom_body_id *ids, int32_t capacity)
+{
+  int32_t i, k = 0;
+  if (!world)
+    return 0;
+  for (i = 0; i < world->slot_count; ++i)
+    if (world->bodies[i].alive)
+      {
+        if (ids && k < capacity)
+          ids[k] = body_id_of (world, i);
+        k++;
+      }
+  return k;
+}
+
+/* ------------------------------------------------------------ accessors */
+
+#define LOOKUP(world, id, b)                                                   \
+  do {                                                                         \
+    if (!(world))                                                              \
+      return CAROM_ERR_NULL_ARGUMENT;                                          \
+    (b) = body_lookup ((world), (id));                                         \
+    if (!(b))                                                                  \
+      return CAROM_ERR_STALE_BODY;                                             \
+  } while (0)
+
+carom_status carom_body_get_position (const carom_world *world, carom_body_id id, double *x, double *y)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (x)
+    *x = b->p.x;
+  if (y)
+    *y = b->p.y;
+  return CAROM_OK;
+}
+
+carom_status carom_body_set_position (carom_world *world, carom_body_id id, double x, double y)
+{
+  body *b;
+  LOOKUP (world, id, b);
+  if (!is_finite (x) || !is_finite (y))
+    return CAROM_ERR_NOT_FINITE;
+  b->p = v2 (x, y);
+  body_sync (b);
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_angle (const carom_world *world, carom_body_id id, double *angle)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (angle)
+    *angle = b->angle;
+  return CAROM_OK;
+}
+
+carom_status carom_body_set_angle (carom_world *world, carom_body_id id, double angle)
+{
+  body *b;
+  LOOKUP (world, id, b);
+  if (!is_finite (angle))
+    return CAROM_ERR_NOT_FINITE;
+  b->angle = angle;
+  body_sync (b);
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_velocity (const carom_world *world, carom_body_id id, double *vx, double *vy)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (vx)
+    *vx = b->v.x;
+  if (vy)
+    *vy = b->v.y;
+  return CAROM_OK;
+}
+
+carom_status carom_body_set_velocity (carom_world *world, carom_body_id id, double vx, double vy)
+{
+  body *b;
+  LOOKUP (world, id, b);
+  if (!is_finite (vx) || !is_finite (vy))
+    return CAROM_ERR_NOT_FINITE;
+  if (b->type == CAROM_STATIC)
+    return CAROM_ERR_STATIC_BODY;
+  b->v = v2 (vx, vy);
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_spin (const carom_world *world, carom_body_id id, double *spin)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (spin)
+    *spin = b->w;
+  return CAROM_OK;
+}
+
+carom_status carom_body_set_spin (carom_world *world, carom_body_id id, double spin)
+{
+  body *b;
+  LOOKUP (world, id, b);
+  if (!is_finite (spin))
+    return CAROM_ERR_NOT_FINITE;
+  if (b->type == CAROM_STATIC)
+    return CAROM_ERR_STATIC_BODY;
+  b->w = spin;
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_mass (const carom_world *world, carom_body_id id, double *mass, double *inertia,
+                                  double *area)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (mass)
+    *mass = b->mass;
+  if (inertia)
+    *inertia = b->inertia;
+  if (area)
+    *area = b->shape.area;
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_type (const carom_world *world, carom_body_id id, carom_body_type *type)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (type)
+    *type = b->type;
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_shape (const carom_world *world, carom_body_id id, carom_shape_kind *kind, double *radius)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (kind)
+    *kind = b->shape.kind;
+  if (radius)
+    *radius = b->shape.kind == CAROM_SHAPE_CIRCLE ? b->shape.radius : b->shape.bound_radius;
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_material (const carom_world *world, carom_body_id id, double *restitution,
+                                      double *friction)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (restitution)
+    *restitution = b->restitution >= 0.0 ? b->restitution : world->def.restitution;
+  if (friction)
+    *friction = b->friction >= 0.0 ? b->friction : world->def.friction;
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_vertices (const carom_world *world, carom_body_id id, double *xy, int32_t capacity,
+                                      int32_t *count)
+{
+  const body *b;
+  xform t;
+  int32_t i;
+  LOOKUP (world, id, b);
+  if (count)
+    *count = b->shape.kind == CAROM_SHAPE_POLYGON ? b->shape.count : 0;
+  if (b->shape.kind != CAROM_SHAPE_POLYGON || !xy)
+    return CAROM_OK;
+  t.p = b->p;
+  t.q = b->q;
+  for (i = 0; i < b->shape.count && i < capacity; ++i)
+    {
+      vec2 v = xform_apply (t, b->shape.vertices[i]);
+      xy[2 * i] = v.x;
+      xy[2 * i + 1] = v.y;
+    }
+  return CAROM_OK;
+}

@@ -1,0 +1,49 @@
+/* Bodies: a slot array with generation-checked ids, mass properties from
+ * their shape, and the state the solver and integrator work on. */
+#ifndef CAROM_BODY_H
+#define CAROM_BODY_H
+
+#include "carom.h"
+#include "shape.h"
+#include "vec2.h"
+
+typedef struct body {
+  /* state: position of the centre of mass, angle, velocities */
+  vec2 p;
+  double angle;
+  rot2 q;          /* cos and sin of angle, refreshed after each move */
+  vec2 v;
+  double w;
+  /* mass properties; statics have zero inverses and so never move */
+  double mass, inertia, inv_mass, inv_inertia;
+  double restitution, friction; /* as given; < 0 means the world default */
+  carom_body_type type;
+  int32_t alive;
+  uint32_t generation;          /* part of the id; bumped on removal */
+  shape shape;
+  vec2 box_lo, box_hi;          /* world-space bounding box */
+  /* split-impulse pseudo-velocities: position correction that never
+   * touches v and w, so it adds no kinetic energy */
+  vec2 pv;
+  double pw;
+} body;
+
+struct carom_world;
+
+void bodies_init (struct carom_world *world);
+void bodies_destroy (struct carom_world *world);
+
+/* The live body an id names, or NULL. */
+body *body_lookup (const struct carom_world *world, carom_body_id id);
+carom_body_id body_id_of (const struct carom_world *world, int32_t slot);
+
+/* How far any point of the body can move in time h: |v| h + |w| R h. */
+static inline double body_reach (const body *b, double h)
+{
+  return h * (v2_len (b->v) + fabs (b->w) * b->shape.bound_radius);
+}
+
+/* Refresh the rotation cache and bounding box after a move. */
+void body_sync (body *b);
+
+#endif

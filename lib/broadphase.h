@@ -1,0 +1,35 @@
+/* Broad phase: sort and sweep over bounding boxes along the axis where the
+ * bodies spread most. Bodies move little between steps, so the sorted order is
+ * repaired by insertion sort in about O(n); a full merge sort, O(n log n),
+ * runs when bodies are added or the order is badly shuffled. Pairs whose
+ * boxes overlap go to a plain callback, as the original c_index did. */
+#ifndef CAROM_BROADPHASE_H
+#define CAROM_BROADPHASE_H
+
+#include <stdint.h>
+
+struct carom_world;
+
+typedef struct sweep_entry {
+  double lo, hi;     /* extent along the sweep axis */
+  double lo2, hi2;   /* extent along the other axis */
+  int32_t slot;
+  int32_t is_static;
+} sweep_entry;
+
+typedef struct broadphase {
+  sweep_entry *entries, *scratch;
+  int32_t count, cap, scratch_cap;
+  int axis;          /* 0: sweep along x, 1: along y */
+  int dirty;         /* bodies were added or removed: rebuild */
+} broadphase;
+
+typedef void (*pair_callback) (struct carom_world *world, int32_t a, int32_t b, void *user);
+
+void broadphase_init (struct carom_world *world);
+void broadphase_destroy (struct carom_world *world);
+/* Sort, then report each overlapping pair once (never two static bodies).
+ * Returns 0 when memory ran out (nothing reported), 1 otherwise. */
+int broadphase_update (struct carom_world *world, pair_callback fn, void *user);
+
+#endif

@@ -1,0 +1,44 @@
+/* Narrow phase: exact tests between pairs of shapes placed in the world.
+ * Each returns the number of contact points written to the manifold (0 when
+ * the shapes are farther apart than `margin`). Normals are unit vectors that
+ * point from the first shape to the second; depth is the penetration along
+ * the normal (negative when apart but within `margin`). */
+#ifndef CAROM_COLLIDE_H
+#define CAROM_COLLIDE_H
+
+#include "shape.h"
+#include "vec2.h"
+
+#define MANIFOLD_MAX_POINTS 4
+
+typedef struct manifold_point {
+  vec2 point;       /* impact point, world frame */
+  vec2 normal;      /* unit, from the first shape towards the second */
+  double depth;     /* penetration along normal */
+  uint32_t feature; /* which vertex/edge pair made it, to match across steps */
+} manifold_point;
+
+typedef struct manifold {
+  int32_t count;
+  manifold_point points[MANIFOLD_MAX_POINTS];
+} manifold;
+
+int32_t collide_circles (vec2 ca, double ra, vec2 cb, double rb, double margin, manifold *m);
+
+/* Convex polygon piece (body frame, placed by xa) against a circle. */
+int32_t collide_polygon_circle (const convex_piece *a, xform xa, vec2 cb, double rb, double margin, manifold *m);
+
+/* Separating axis theorem with the minimum push vector (thesis 3.2.1): the
+ * axis of least overlap among the edge normals of both pieces gives the
+ * normal; the contact points, which SAT alone does not give, come from
+ * clipping the incident edge against the reference edge's side planes (up to
+ * two points). */
+int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin, manifold *m);
+
+/* The thesis' vertex-edge method (3.2.2) on the true outlines, convex or
+ * concave (counter-clockwise, body frame): vertices of one polygon inside the
+ * other give impact points, the penetrated edge gives the normal, including
+ * the parallel-edge and vertex-on-vertex cases. */
+int32_t collide_polygons_vertex_edge (const vec2 *va, int32_t na, xform xa, const vec2 *vb, int32_t nb, xform xb, double margin, manifold *m);
+
+#endif

@@ -1,0 +1,124 @@
+/* Separating axis theorem for convex pieces (thesis 3.2.1), with contact
+ * points from clipping, which the thesis names as SAT's pitfall. */
+#include "collide.h"
+
+/* The edge of `p` (placed by xp) whose outward normal separates it most from
+ * `q` (placed by xq): the candidate axes of thesis fig. 3.7. The separation
+ * along an axis is the gap between p's edge and q's nearest vertex; the
+ * largest over the axes is minus the length of the minimum push vector. */
+static double max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, int32_t *edge)
+{
+  xform rel = xform_relative (xq, xp); /* p in q's frame */
+  double best = -INFINITY;
+  int32_t i, j;
+  *edge = 0;
+  for (i = 0; i < p->count; ++i)
+    {
+      vec2 n = rot2_apply (rel.q, p->normals[i]);
+      vec2 v = xform_apply (rel, p->vertices[i]);
+      double s = INFINITY;
+      for (j = 0; j < q->count; ++j)
+        {
+          double d = v2_dot (n, v2_sub (q->vertices[j], v));
+          if (d < s)
+            s = d;
+        }
+      if (s > best)
+        {
+          best = s;
+          *edge = i;
+        }
+    }
+  return best;
+}
+
+typedef struct clip_vertex {
+  vec2 v;
+  uint32_t id;
+} clip_vertex;
+
+/* Keep the part of segment `in` where dot(n, x) <= offset (Sutherland-Hodgman
+ * on one plane). Returns the number of points kept (0 to 2). */
+static int clip_segment (clip_vertex out[2], const clip_vertex in[2], vec2 n, double offset, uint32_t plane_id)
+{
+  int count = 0;
+  double d0 = v2_dot (n, in[0].v) - offset, d1 = v2_dot (n, in[1].v) - offset;
+  if (d0 <= 0.0)
+    out[count++] = in[0];
+  if (d1 <= 0.0)
+    out[count++] = in[1];
+  if (d0 * d1 < 0.0)
+    {
+      double t = d0 / (d0 - d1);
+      out[count].v = v2_lerp (in[0].v, in[1].v, t);
+      out[count].id = plane_id;
+      count++;
+    }
+  return count;
+}
+
+int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin, manifold *m)
+{
+  int32_t edge_a, edge_b, ref_edge, inc_edge = 0, i, n_inc, flip;
+  const convex_piece *ref, *inc;
+  xform xref, xinc;
+  double sep_a, sep_b, best = INFINITY, tol = 0.1 * margin;
+  vec2 n_ref, v1, v2_, tangent;
+  clip_vertex seg[2], clip1[2], clip2[2];
+  m->count = 0;
+  sep_a = max_separation (a, xa, b, xb, &edge_a);
+  if (sep_a > margin)
+    return 0;
+  sep_b = max_separation (b, xb, a, xa, &edge_b);
+  if (sep_b > margin)
+    return 0;
+  /* prefer A's face unless B's is clearly better, so the choice does not
+   * flicker between steps for nearly equal candidates */
+  if (sep_b > sep_a + tol)
+    {
+      ref = b, xref = xb, inc = a, xinc = xa, ref_edge = edge_b, flip = 1;
+    }
+  else
+    {
+      ref = a, xref = xa, inc = b, xinc = xb, ref_edge = edge_a, flip = 0;
+    }
+  n_ref = rot2_apply (xref.q, ref->normals[ref_edge]);
+  /* incident edge: the one on the other piece facing the reference normal
+   * most directly */
+  n_inc = inc->count;
+  for (i = 0; i < n_inc; ++i)
+    {
+      double d = v2_dot (n_ref, rot2_apply (xinc.q, inc->normals[i]));
+      if (d < best)
+        {
+          best = d;
+          inc_edge = i;
+        }
+    }
+  seg[0].v = xform_apply (xinc, inc->vertices[inc_edge]);
+  seg[0].id = (uint32_t) inc_edge;
+  seg[1].v = xform_apply (xinc, inc->vertices[(inc_edge + 1) % n_inc]);
+  seg[1].id = (uint32_t) ((inc_edge + 1) % n_inc);
+  v1 = xform_apply (xref, ref->vertices[ref_edge]);
+  v2_ = xform_apply (xref, ref->vertices[(ref_edge + 1) % ref->count]);
+  tangent = v2_normalize (v2_sub (v2_, v1));
+  /* clip to the reference edge's two side planes */
+  if (clip_segment (clip1, seg, v2_neg (tangent), -v2_dot (tangent, v1), 0x8000u) < 2)
+    return 0;
+  if (clip_segment (clip2, clip1, tangent, v2_dot (tangent, v2_), 0x8001u) < 2)
+    return 0;
+  for (i = 0; i < 2; ++i)
+    {
+      double sep = v2_dot (n_ref, v2_sub (clip2[i].v, v1));
+      manifold_point *mp;
+      if (sep > margin)
+        continue;
+      mp = &m->points[m->count++];
+      /* the point halfway between the incident vertex and the reference face */
+      mp->point = v2_mad (clip2[i].v, -0.5 * sep, n_ref);
+      mp->normal = flip ? v2_neg (n_ref) : n_ref;
+      mp->depth = -sep;
+      mp->feature = ((uint32_t) flip << 31) | ((uint32_t) (ref_edge & 0x7fff) << 16) | clip2[i].id;
+    }
+  return m->count;
+}

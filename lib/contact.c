@@ -1,0 +1,308 @@
+/* Contacts: narrow-phase dispatch for each broad-phase pair, matching with
+ * last step's contacts for warm starting, and the public contact queries. */
+#include "contact.h"
+
+#include <string.h>
+
+#include "world.h"
+
+void contacts_init (carom_world *world)
+{
+  memset (&world->contacts, 0, sizeof world->contacts);
+}
+
+void contacts_destroy (carom_world *world)
+{
+  contacts *c = &world->contacts;
+  mem_free (&world->allocator, c->list, (size_t) c->cap * sizeof (contact));
+  mem_free (&world->allocator, c->old, (size_t) c->old_cap * sizeof (contact));
+  mem_free (&world->allocator, c->table, (size_t) c->table_cap * sizeof (int32_t));
+  memset (c, 0, sizeof *c);
+}
+
+static uint32_t pair_hash (int32_t a, int32_t b, int32_t pa, int32_t pb)
+{
+  uint32_t h = (uint32_t) a * 0x9E3779B1u;
+  h ^= (uint32_t) b * 0x85EBCA77u + (h << 6) + (h >> 2);
+  h ^= (uint32_t) pa * 0xC2B2AE3Du + (h << 6) + (h >> 2);
+  h ^= (uint32_t) pb * 0x27D4EB2Fu + (h << 6) + (h >> 2);
+  return h;
+}
+
+/* Index of last step's contact between the same two pieces, or -1. */
+static int32_t find_old (const contacts *c, int32_t a, int32_t b, int32_t pa, int32_t pb)
+{
+  uint32_t mask, i;
+  if (c->old_count == 0)
+    return -1;
+  mask = (uint32_t) c->table_cap - 1;
+  for (i = pair_hash (a, b, pa, pb) & mask;; i = (i + 1) & mask)
+    {
+      int32_t k = c->table[i];
+      const contact *o;
+      if (k < 0)
+        return -1;
+      o = &c->old[k];
+      if (o->a == a && o->b == b && o->piece_a == pa && o->piece_b == pb)
+        return k;
+    }
+}
+
+static int build_table (carom_world *world)
+{
+  contacts *c = &world->contacts;
+  int32_t need = 16, k;
+  uint32_t mask;
+  while (need < 2 * c->old_count)
+    need *= 2;
+  if (need > c->table_cap)
+    {
+      int32_t *t = mem_alloc (&world->allocator, (size_t) need * sizeof (int32_t));
+      if (!t)
+        return 0;
+      mem_free (&world->allocator, c->table, (size_t) c->table_cap * sizeof (int32_t));
+      c->table = t;
+      c->table_cap = need;
+    }
+  memset (c->table, 0xff, (size_t) c->table_cap * sizeof (int32_t)); /* all -1 */
+  mask = (uint32_t) c->table_cap - 1;
+  for (k = 0; k < c->old_count; ++k)
+    {
+      const contact *o = &c->old[k];
+      uint32_t i = pair_hash (o->a, o->b, o->piece_a, o->piece_b) & mask;
+      while (c->table[i] >= 0)
+        i = (i + 1) & mask;
+      c->table[i] = k;
+    }
+  return 1;
+}
+
+typedef struct pair_context {
+  double restitution, friction, slop, margin;
+} pair_context;
+
+static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, const manifold *m,
+                          const pair_context *pc)
+{
+  contacts *c = &world->contacts;
+  contact *k;
+  int32_t old, i, j;
+  if (m->count == 0)
+    return;
+  if (!mem_reserve (&world->allocator, (void **) &c->list, &c->cap, c->count + 1, sizeof (contact)))
+    {
+      c->out_of_memory = 1;
+      return;
+    }
+  k = &c->list[c->count++];
+  k->a = a, k->b = b, k->piece_a = pa, k->piece_b = pb;
+  k->restitution = pc->restitution;
+  k->friction = pc->friction;
+  k->slop = pc->slop;
+  k->count = m->count;
+  k->first_point = c->point_count;
+  c->point_count += m->count;
+  old = find_old (c, a, b, pa, pb);
+  for (i = 0; i < m->count; ++i)
+    {
+      contact_point *p = &k->points[i];
+      memset (p, 0, sizeof *p);
+      p->point = m->points[i].point;
+      p->normal = m->points[i].normal;
+      p->depth = m->points[i].depth;
+      p->feature = m->points[i].feature;
+      if (old < 0)
+        continue;
+      /* warm start: the same feature pair carries its impulses over */
+      for (j = 0; j < c->old[old].count; ++j)
+        if (c->old[old].points[j].feature == p->feature)
+          {
+            p->normal_impulse = c->old[old].points[j].normal_impulse;
+            p->tangent_impulse = c->old[old].points[j].tangent_impulse;
+            break;
+          }
+    }
+}
+
+static double material (double own, double fallback)
+{
+  return own >= 0.0 ? own : fallback;
+}
+
+static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
+{
+  body *A, *B;
+  pair_context pc;
+  manifold m;
+  xform xa, xb;
+  double ea, eb, fa, fb;
+  int32_t i, j;
+  (void) user;
+  /* order: polygon before circle, else lower slot first, so the normal
+   * convention of each narrow-phase test holds and the result does not
+   * depend on the broad phase's order */
+  if ((world->bodies[a].shape.kind == CAROM_SHAPE_CIRCLE && world->bodies[b].shape.kind == CAROM_SHAPE_POLYGON)
+      || (world->bodies[a].shape.kind == world->bodies[b].shape.kind && a > b))
+    {
+      int32_t t = a;
+      a = b;
+      b = t;
+    }
+  A = &world->bodies[a];
+  B = &world->bodies[b];
+  /* combining rule: the bouncier body wins (max); friction is the
+   * geometric mean */
+  ea = material (A->restitution, world->def.restitution);
+  eb = material (B->restitution, world->def.restitution);
+  fa = material (A->friction, world->def.friction);
+  fb = material (B->friction, world->def.friction);
+  pc.restitution = ea > eb ? ea : eb;
+  pc.friction = sqrt (fa * fb);
+  pc.slop = world->def.slop * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
+  /* speculative margin: pairs that can close their gap within this sub-step
+   * are contacts now, so impacts are met before the bodies overlap */
+  pc.margin = pc.slop + body_reach (A, world->step_h) + body_reach (B, world->step_h);
+  xa.p = A->p, xa.q = A->q;
+  xb.p = B->p, xb.q = B->q;
+
+  if (A->shape.kind == CAROM_SHAPE_CIRCLE)
+    {
+      collide_circles (A->p, A->shape.radius, B->p, B->shape.radius, pc.margin, &m);
+      add_manifold (world, a, b, -1, -1, &m, &pc);
+      return;
+    }
+  if (B->shape.kind == CAROM_SHAPE_CIRCLE)
+    {
+      for (i = 0; i < A->shape.piece_count; ++i)
+        {
+          const convex_piece *p = &A->shape.pieces[i];
+          vec2 c = xform_apply (xa, p->center);
+          if (v2_len (v2_sub (B->p, c)) > p->bound_radius + B->shape.radius + pc.margin)
+            continue;
+          collide_polygon_circle (p, xa, B->p, B->shape.radius, pc.margin, &m);
+          add_manifold (world, a, b, i, -1, &m, &pc);
+        }
+      return;
+    }
+  if (world->def.narrow_phase == CAROM_NARROW_VERTEX_EDGE)
+    {
+      collide_polygons_vertex_edge (A->shape.vertices, A->shape.count, xa, B->shape.vertices, B->shape.count, xb,
+                                    pc.margin, &m);
+      add_manifold (world, a, b, -1, -1, &m, &pc);
+      return;
+    }
+  for (i = 0; i < A->shape.piece_count; ++i)
+    {
+      const convex_piece *p = &A->shape.pieces[i];
+      vec2 pc_center = xform_apply (xa, p->center);
+      for (j = 0; j < B->shape.piece_count; ++j)
+        {
+          const convex_piece *q = &B->shape.pieces[j];
+          vec2 qc = xform_apply (xb, q->center);
+          if (v2_len (v2_sub (qc, pc_center)) > p->bound_radius + q->bound_radius + pc.margin)
+            continue;
+          collide_polygons_sat (p, xa, q, xb, pc.margin, &m);
+          add_manifold (world, a, b, i, j, &m, &pc);
+        }
+    }
+}
+
+carom_status contacts_update (carom_world *world)
+{
+  contacts *c = &world->contacts;
+  contact *t = c->old;
+  int32_t tcap = c->old_cap, saved_points = c->point_count;
+  /* last step's contacts become `old`; this step fills the other buffer */
+  c->old = c->list, c->old_count = c->count, c->old_cap = c->cap;
+  c->list = t, c->cap = tcap, c->count = 0;
+  c->point_count = 0;
+  c->out_of_memory = 0;
+  if (!build_table (world) || !broadphase_update (world, on_pair, NULL) || c->out_of_memory)
+    {
+      /* put last step's contacts back: the world is as it was */
+      t = c->list, tcap = c->cap;
+      c->list = c->old, c->count = c->old_count, c->cap = c->old_cap;
+      c->old = t, c->old_cap = tcap, c->old_count = 0;
+      c->point_count = saved_points;
+      return CAROM_ERR_OUT_OF_MEMORY;
+    }
+  return CAROM_OK;
+}
+
+static void forget_in (contact *list, int32_t *count, int32_t slot)
+{
+  int32_t i, k = 0;
+  for (i = 0; i < *count; ++i)
+    if (list[i].a != slot && list[i].b != slot)
+      list[k++] = list[i];
+  *count = k;
+}
+
+void contacts_forget_body (carom_world *world, int32_t slot)
+{
+  contacts *c = &world->contacts;
+  int32_t i, points = 0;
+  forget_in (c->list, &c->count, slot);
+  forget_in (c->old, &c->old_count, slot);
+  for (i = 0; i < c->count; ++i)
+    {
+      c->list[i].first_point = points;
+      points += c->list[i].count;
+    }
+  c->point_count = points;
+}
+
+/* ------------------------------------------------------------ public API */
+
+carom_status carom_world_detect (carom_world *world)
+{
+  if (!world)
+    return CAROM_ERR_NULL_ARGUMENT;
+  return contacts_update (world);
+}
+
+int32_t carom_world_contact_count (const carom_world *world)
+{
+  return world ? world->contacts.point_count : 0;
+}
+
+carom_status carom_world_get_contact (const carom_world *world, int32_t index, carom_body_id *a, carom_body_id *b,
+                                      double *px, double *py, double *nx, double *ny, double *depth)
+{
+  const contacts *c;
+  int32_t lo, hi;
+  const contact *k;
+  const contact_point *p;
+  if (!world)
+    return CAROM_ERR_NULL_ARGUMENT;
+  c = &world->contacts;
+  if (index < 0 || index >= c->point_count)
+    return CAROM_ERR_BAD_ARGUMENT;
+  /* binary search for the contact holding this point */
+  lo = 0, hi = c->count - 1;
+  while (lo < hi)
+    {
+      int32_t mid = (lo + hi + 1) / 2;
+      if (c->list[mid].first_point <= index)
+        lo = mid;
+      else
+        hi = mid - 1;
+    }
+  k = &c->list[lo];
+  p = &k->points[index - k->first_point];
+  if (a)
+    *a = body_id_of (world, k->a);
+  if (b)
+    *b = body_id_of (world, k->b);
+  if (px)
+    *px = p->point.x;
+  if (py)
+    *py = p->point.y;
+  if (nx)
+    *nx = p->normal.x;
+  if (ny)
+    *ny = p->normal.y;
+  if (depth)
+    *depth = p->depth;
+  return CAROM_OK;
+}

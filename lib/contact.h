@@ -1,0 +1,53 @@
+/* Contacts: the narrow phase run on every pair the broad phase reports, kept
+ * from one step to the next so the solver can start from last step's
+ * impulses (warm starting). */
+#ifndef CAROM_CONTACT_H
+#define CAROM_CONTACT_H
+
+#include "collide.h"
+
+typedef struct contact_point {
+  vec2 point, normal;   /* world frame; normal from body a to body b */
+  double depth;
+  uint32_t feature;
+  /* solver data */
+  vec2 ra, rb;          /* from each centre of mass to the point */
+  double normal_mass;   /* 1 / (denominator of eq. 3.23) */
+  double tangent_mass;
+  double target;        /* normal relative velocity to reach (restitution) */
+  double bias;          /* pseudo-velocity that removes overlap */
+  double normal_impulse, tangent_impulse, pseudo_impulse;
+} contact_point;
+
+typedef struct contact {
+  int32_t a, b;               /* body slots */
+  int32_t piece_a, piece_b;   /* convex pieces (or -1 for the whole outline) */
+  double restitution, friction;
+  double slop;                /* overlap left alone, from the bodies' sizes */
+  int32_t first_point;        /* index of points[0] among all points */
+  int32_t count;
+  contact_point points[MANIFOLD_MAX_POINTS];
+} contact;
+
+typedef struct contacts {
+  contact *list;         /* this step's contacts */
+  int32_t count, cap;
+  contact *old;          /* last step's, for warm starting */
+  int32_t old_count, old_cap;
+  int32_t *table;        /* open-addressing hash over `old` */
+  int32_t table_cap;
+  int32_t point_count;
+  int out_of_memory;
+} contacts;
+
+struct carom_world;
+
+void contacts_init (struct carom_world *world);
+void contacts_destroy (struct carom_world *world);
+/* Detect all contacts at the current positions, carrying over the impulses
+ * of matching points from the previous detection. */
+carom_status contacts_update (struct carom_world *world);
+/* Forget every contact that involves `slot` (the body is being removed). */
+void contacts_forget_body (struct carom_world *world, int32_t slot);
+
+#endif

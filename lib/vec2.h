@@ -1,0 +1,73 @@
+/* Small 2D vector and rotation helpers used by every module (internal). */
+#ifndef CAROM_VEC2_H
+#define CAROM_VEC2_H
+
+#include <math.h>
+
+#define CAROM_PI 3.14159265358979323846
+
+typedef struct vec2 {
+  double x, y;
+} vec2;
+
+/* A rotation kept as its cosine and sine, so it is computed once per step. */
+typedef struct rot2 {
+  double c, s;
+} rot2;
+
+/* A rigid transform: rotate, then translate. */
+typedef struct xform {
+  vec2 p;
+  rot2 q;
+} xform;
+
+static inline vec2 v2 (double x, double y) { vec2 v = {x, y}; return v; }
+static inline vec2 v2_add (vec2 a, vec2 b) { return v2 (a.x + b.x, a.y + b.y); }
+static inline vec2 v2_sub (vec2 a, vec2 b) { return v2 (a.x - b.x, a.y - b.y); }
+static inline vec2 v2_scale (vec2 a, double s) { return v2 (a.x * s, a.y * s); }
+static inline vec2 v2_neg (vec2 a) { return v2 (-a.x, -a.y); }
+static inline double v2_dot (vec2 a, vec2 b) { return a.x * b.x + a.y * b.y; }
+/* z component of the 3D cross product of (a, 0) and (b, 0). */
+static inline double v2_cross (vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
+/* w x r for an angular velocity w along z (thesis, after eq. 3.16). */
+static inline vec2 v2_cross_sv (double w, vec2 r) { return v2 (-w * r.y, w * r.x); }
+/* The left perpendicular: (x, y) -> (-y, x). */
+static inline vec2 v2_perp (vec2 a) { return v2 (-a.y, a.x); }
+static inline double v2_len2 (vec2 a) { return v2_dot (a, a); }
+static inline double v2_len (vec2 a) { return sqrt (v2_dot (a, a)); }
+static inline vec2 v2_mad (vec2 a, double s, vec2 b) { return v2 (a.x + s * b.x, a.y + s * b.y); }
+static inline vec2 v2_lerp (vec2 a, vec2 b, double t) { return v2 (a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)); }
+static inline vec2 v2_min (vec2 a, vec2 b) { return v2 (a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y); }
+static inline vec2 v2_max (vec2 a, vec2 b) { return v2 (a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y); }
+
+/* Unit vector along a; returns (0, 0) for a zero vector. */
+static inline vec2 v2_normalize (vec2 a)
+{
+  double l = v2_len (a);
+  return l > 0.0 ? v2_scale (a, 1.0 / l) : v2 (0.0, 0.0);
+}
+
+static inline rot2 rot2_from_angle (double angle)
+{
+  rot2 q = {cos (angle), sin (angle)};
+  return q;
+}
+static inline vec2 rot2_apply (rot2 q, vec2 v) { return v2 (q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y); }
+static inline vec2 rot2_apply_inv (rot2 q, vec2 v) { return v2 (q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y); }
+
+static inline vec2 xform_apply (xform t, vec2 v) { return v2_add (rot2_apply (t.q, v), t.p); }
+static inline vec2 xform_apply_inv (xform t, vec2 v) { return rot2_apply_inv (t.q, v2_sub (v, t.p)); }
+
+/* B expressed in A's frame: inv(A) * B. */
+static inline xform xform_relative (xform a, xform b)
+{
+  xform r;
+  r.q.c = a.q.c * b.q.c + a.q.s * b.q.s;
+  r.q.s = a.q.c * b.q.s - a.q.s * b.q.c;
+  r.p = rot2_apply_inv (a.q, v2_sub (b.p, a.p));
+  return r;
+}
+
+static inline int is_finite (double x) { return isfinite (x) != 0; }
+
+#endif

@@ -1,0 +1,154 @@
+/* The world and its update pipeline, in the flying-balls lifecycle:
+ * init, update (per sub-step: detect, half kick, solve, drift, half kick),
+ * destroy. */
+#include "world.h"
+
+#include <string.h>
+
+#include "gravity.h"
+#include "solver.h"
+
+void carom_world_def_init (carom_world_def *def)
+{
+  if (!def)
+    return;
+  memset (def, 0, sizeof *def);
+  def->size = sizeof *def;
+  def->substeps = 1;
+  def->iterations = 8;
+  def->position_correction = 0.2;
+  def->slop = 0.01;
+  def->narrow_phase = CAROM_NARROW_SAT;
+}
+
+static carom_status check_def (const carom_world_def *def)
+{
+  if (def->size != sizeof (carom_world_def))
+    return CAROM_ERR_BAD_STRUCT_SIZE;
+  if (!is_finite (def->gravity_x) || !is_finite (def->gravity_y) || !is_finite (def->restitution)
+      || !is_finite (def->friction) || !is_finite (def->position_correction) || !is_finite (def->slop))
+    return CAROM_ERR_NOT_FINITE;
+  if (def->restitution < 0.0 || def->restitution > 1.0 || def->friction < 0.0 || def->substeps < 1
+      || def->substeps > 1000 || def->iterations < 1 || def->iterations > 1000 || def->position_correction < 0.0
+      || def->position_correction > 1.0 || def->slop < 0.0 || def->slop > 1.0
+      || (def->narrow_phase != CAROM_NARROW_SAT && def->narrow_phase != CAROM_NARROW_VERTEX_EDGE)
+      || (!def->allocator.alloc != !def->allocator.free))
+    return CAROM_ERR_BAD_ARGUMENT;
+  return CAROM_OK;
+}
+
+carom_status carom_world_init (carom_world **world, const carom_world_def *def)
+{
+  carom_world_def defaults;
+  carom_world *w;
+  carom_status st;
+  if (!world)
+    return CAROM_ERR_NULL_ARGUMENT;
+  *world = NULL;
+  if (!def)
+    {
+      carom_world_def_init (&defaults);
+      def = &defaults;
+    }
+  st = check_def (def);
+  if (st != CAROM_OK)
+    return st;
+  w = mem_alloc (&def->allocator, sizeof *w);
+  if (!w)
+    return CAROM_ERR_OUT_OF_MEMORY;
+  memset (w, 0, sizeof *w);
+  w->allocator = def->allocator;
+  w->def = *def;
+  w->gravity = v2 (def->gravity_x, def->gravity_y);
+  bodies_init (w);
+  broadphase_init (w);
+  contacts_init (w);
+  *world = w;
+  return CAROM_OK;
+}
+
+void carom_world_destroy (carom_world *world)
+{
+  carom_allocator a;
+  if (!world)
+    return;
+  contacts_destroy (world);
+  broadphase_destroy (world);
+  bodies_destroy (world);
+  a = world->allocator;
+  mem_free (&a, world, sizeof *world);
+}
+
+/* Move every dynamic body with its velocity plus the position-correction
+ * pseudo-velocity, which is then dropped. */
+static void drift (carom_world *world, double h)
+{
+  int32_t i;
+  for (i = 0; i < world->slot_count; ++i)
+    {
+      body *b = &world->bodies[i];
+      if (!b->alive || b->type == CAROM_STATIC)
+        continue;
+      b->p = v2_mad (b->p, h, v2_add (b->v, b->pv));
+      b->angle += h * (b->w + b->pw);
+      b->pv = v2 (0.0, 0.0);
+      b->pw = 0.0;
+      body_sync (b);
+    }
+}
+
+static carom_status substep (carom_world *world, double h)
+{
+  carom_status st;
+  world->step_h = h;
+  st = contacts_update (world);
+  world->step_h = 0.0;
+  if (st != CAROM_OK)
+    return st;
+  gravity_update (world, 0.5 * h);
+  solver_update (world, h);
+  drift (world, h);
+  gravity_update (world, 0.5 * h);
+  return CAROM_OK;
+}
+
+carom_status carom_world_update (carom_world *world, double dt)
+{
+  int32_t k;
+  double h;
+  if (!world)
+    return CAROM_ERR_NULL_ARGUMENT;
+  if (!is_finite (dt) || dt <= 0.0)
+    return CAROM_ERR_BAD_TIME_STEP;
+  h = dt / world->def.substeps;
+  for (k = 0; k < world->def.substeps; ++k)
+    {
+      carom_status st = substep (world, h);
+      if (st != CAROM_OK)
+        return st;
+    }
+  return CAROM_OK;
+}
+
+carom_status carom_world_set_gravity (carom_world *world, double gx, double gy)
+{
+  if (!world)
+    return CAROM_ERR_NULL_ARGUMENT;
+  if (!is_finite (gx) || !is_finite (gy))
+    return CAROM_ERR_NOT_FINITE;
+  world->gravity = v2 (gx, gy);
+  world->def.gravity_x = gx;
+  world->def.gravity_y = gy;
+  return CAROM_OK;
+}
+
+carom_status carom_world_get_gravity (const carom_world *world, double *gx, double *gy)
+{
+  if (!world)
+    return CAROM_ERR_NULL_ARGUMENT;
+  if (gx)
+    *gx = world->gravity.x;
+  if (gy)
+    *gy = world->gravity.y;
+  return CAROM_OK;
+}

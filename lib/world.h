@@ -1,0 +1,27 @@
+/* The world: settings, the body slots and each pipeline stage's state. */
+#ifndef CAROM_WORLD_H
+#define CAROM_WORLD_H
+
+#include "body.h"
+#include "carom.h"
+#include "contact.h"
+#include "broadphase.h"
+
+struct carom_world {
+  carom_allocator allocator;
+  carom_world_def def; /* settings; def.allocator is the caller's copy */
+  vec2 gravity;
+  double step_h; /* current sub-step, 0 outside update: sizes the speculative
+                    contact margin */
+
+  /* bodies: slots [0, slot_count), some dead; dead slots are reused LIFO */
+  body *bodies;
+  int32_t slot_count, slot_cap, live_count;
+  int32_t *free_slots;
+  int32_t free_count, free_cap;
+
+  broadphase broad;
+  contacts contacts;
+};
+
+#endif

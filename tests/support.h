@@ -1,0 +1,52 @@
+/* Helpers shared by the test binaries. */
+#ifndef CAROM_TEST_SUPPORT_H
+#define CAROM_TEST_SUPPORT_H
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include "carom.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+/* |a - b| <= tol * max(|a|, |b|, tiny) */
+int near_rel (double a, double b, double tol);
+#define assert_near_rel(a, b, tol)                                            \
+  do {                                                                        \
+    double a_ = (a), b_ = (b);                                                \
+    if (!near_rel (a_, b_, tol))                                              \
+      fail_msg ("%s = %.17g, %s = %.17g, relative tolerance %g", #a, a_, #b,  \
+                b_, (double) (tol));                                          \
+  } while (0)
+#define assert_near_abs(a, b, tol)                                            \
+  do {                                                                        \
+    double a_ = (a), b_ = (b);                                                \
+    if (!(a_ - b_ <= (tol) && b_ - a_ <= (tol)))                              \
+      fail_msg ("%s = %.17g, %s = %.17g, absolute tolerance %g", #a, a_, #b,  \
+                b_, (double) (tol));                                          \
+  } while (0)
+#define assert_status(expr, want)                                             \
+  do {                                                                        \
+    carom_status s_ = (expr);                                                 \
+    if (s_ != (want))                                                         \
+      fail_msg ("%s returned %d (%s), wanted %d (%s)", #expr, (int) s_,       \
+                carom_status_string (s_), (int) (want),                       \
+                carom_status_string (want));                                  \
+  } while (0)
+
+/* cmocka fixtures mirroring the world's init/destroy: *state is the world. */
+int world_setup (void **state);
+int world_teardown (void **state);
+
+/* Total kinetic energy (translational and rotational) of all bodies. */
+double world_kinetic_energy (const carom_world *world);
+/* Total linear momentum and angular momentum about the origin. */
+void world_momentum (const carom_world *world, double *px, double *py, double *l);
+
+#endif

@@ -1,0 +1,324 @@
+/* Collision detection (SAT, circles) and resolution (eq. 3.23) against
+ * closed forms and conservation laws. */
+#include "support.h"
+
+#include <math.h>
+
+#include "collide.h"
+
+static convex_piece make_box_piece (double w, double h, vec2 *v, vec2 *n)
+{
+  convex_piece p;
+  v[0] = v2 (-w / 2, -h / 2), v[1] = v2 (w / 2, -h / 2), v[2] = v2 (w / 2, h / 2), v[3] = v2 (-w / 2, h / 2);
+  n[0] = v2 (0, -1), n[1] = v2 (1, 0), n[2] = v2 (0, 1), n[3] = v2 (-1, 0);
+  p.count = 4, p.vertices = v, p.normals = n, p.center = v2 (0, 0), p.bound_radius = sqrt (w * w + h * h) / 2;
+  return p;
+}
+
+static xform place (double x, double y, double angle)
+{
+  xform t;
+  t.p = v2 (x, y);
+  t.q = rot2_from_angle (angle);
+  return t;
+}
+
+/* ---------------------------------------------------------- detection */
+
+/* Face to face: two points, found by clipping (what SAT alone lacks). */
+static void test_sat_face_contact_has_two_clipped_points (void **state)
+{
+  vec2 va[4], na[4], vb[4], nb[4];
+  convex_piece a = make_box_piece (2, 2, va, na), b = make_box_piece (2, 2, vb, nb);
+  manifold m;
+  int i;
+  (void) state;
+  /* B sits on A, 0.1 deep, shifted right by 1: overlap in x is [0, 1] */
+  assert_int_equal (collide_polygons_sat (&a, place (0, 0, 0), &b, place (1, 1.9, 0), 0.0, &m), 2);
+  for (i = 0; i < 2; ++i)
+    {
+      assert_near_abs (m.points[i].normal.x, 0.0, 1e-15);
+      assert_near_abs (m.points[i].normal.y, 1.0, 1e-15);
+      assert_near_abs (m.points[i].depth, 0.1, 1e-12);
+      assert_near_abs (m.points[i].point.y, 0.95, 1e-12); /* halfway into the overlap */
+    }
+  assert_near_abs (fmin (m.points[0].point.x, m.points[1].point.x), 0.0, 1e-12);
+  assert_near_abs (fmax (m.points[0].point.x, m.points[1].point.x), 1.0, 1e-12);
+  assert_true (m.points[0].feature != m.points[1].feature);
+}
+
+/* The minimum push vector of a rotated pair: a box tilted 45 degrees whose
+ * corner pokes 0.05 into the top face of another. */
+static void test_sat_rotated_corner (void **state)
+{
+  vec2 va[4], na[4], vb[4], nb[4];
+  convex_piece a = make_box_piece (4, 1, va, na), b = make_box_piece (1, 1, vb, nb);
+  manifold m;
+  double half_diag = sqrt (0.5);
+  (void) state;
+  assert_int_equal (collide_polygons_sat (&a, place (0, 0, 0), &b, place (0.3, 0.5 + half_diag - 0.05, M_PI / 4),
+                                          0.0, &m),
+                    1);
+  assert_near_abs (m.points[0].normal.x, 0.0, 1e-12);
+  assert_near_abs (m.points[0].normal.y, 1.0, 1e-12);
+  assert_near_abs (m.points[0].depth, 0.05, 1e-12);
+  assert_near_abs (m.points[0].point.x, 0.3, 1e-12);
+  assert_near_abs (m.points[0].point.y, 0.5 - 0.025, 1e-12);
+  /* swapped: the normal flips, still from the first shape to the second */
+  assert_int_equal (collide_polygons_sat (&b, place (0.3, 0.5 + half_diag - 0.05, M_PI / 4), &a, place (0, 0, 0),
+                                          0.0, &m),
+                    1);
+  assert_near_abs (m.points[0].normal.y, -1.0, 1e-12);
+}
+
+static void test_sat_separated_touching_margin (void **state)
+{
+  vec2 va[4], na[4], vb[4], nb[4];
+  convex_piece a = make_box_piece (1, 1, va, na), b = make_box_piece (1, 1, vb, nb);
+  manifold m;
+  (void) state;
+  assert_int_equal (collide_polygons_sat (&a, place (0, 0, 0), &b, place (1.5, 0, 0.3), 0.01, &m), 0);
+  /* apart by 0.005, within the 0.01 margin: a contact with negative depth */
+  assert_int_equal (collide_polygons_sat (&a, place (0, 0, 0), &b, place (1.005, 0, 0), 0.01, &m), 2);
+  assert_near_abs (m.points[0].depth, -0.005, 1e-12);
+  assert_int_equal (collide_polygons_sat (&a, place (0, 0, 0), &b, place (1.02, 0, 0), 0.01, &m), 0);
+}
+
+/* A body deep inside another still gets a unit normal. */
+static void test_sat_deep_inside_has_unit_normal (void **state)
+{
+  vec2 va[4], na[4], vb[4], nb[4];
+  convex_piece a = make_box_piece (10, 10, va, na), b = make_box_piece (1, 1, vb, nb);
+  manifold m;
+  int i;
+  (void) state;
+  assert_true (collide_polygons_sat (&a, place (0, 0, 0), &b, place (0, 0, 0.2), 0.0, &m) > 0);
+  for (i = 0; i < m.count; ++i)
+    {
+      assert_near_abs (v2_len (m.points[i].normal), 1.0, 1e-12);
+      assert_true (m.points[i].depth > 4.0);
+    }
+}
+
+static void test_circles (void **state)
+{
+  manifold m;
+  vec2 va[4], na[4];
+  convex_piece box = make_box_piece (2, 2, va, na);
+  (void) state;
+  assert_int_equal (collide_circles (v2 (0, 0), 1, v2 (1.5, 0), 1, 0, &m), 1);
+  assert_near_abs (m.points[0].normal.x, 1.0, 1e-15);
+  assert_near_abs (m.points[0].depth, 0.5, 1e-15);
+  assert_near_abs (m.points[0].point.x, 0.75, 1e-15);
+  assert_int_equal (collide_circles (v2 (0, 0), 1, v2 (2.5, 0), 1, 0, &m), 0);
+  /* coincident centres: still a unit normal */
+  assert_int_equal (collide_circles (v2 (3, 3), 1, v2 (3, 3), 2, 0, &m), 1);
+  assert_near_abs (v2_len (m.points[0].normal), 1.0, 1e-15);
+  /* circle against the box's face, and against its corner */
+  assert_int_equal (collide_polygon_circle (&box, place (0, 0, 0), v2 (0.2, 1.4), 0.5, 0, &m), 1);
+  assert_near_abs (m.points[0].normal.y, 1.0, 1e-15);
+  assert_near_abs (m.points[0].depth, 0.1, 1e-12);
+  assert_int_equal (collide_polygon_circle (&box, place (0, 0, 0), v2 (1.3, 1.4), 0.6, 0, &m), 1);
+  assert_near_abs (m.points[0].normal.x, 0.6, 1e-12);
+  assert_near_abs (m.points[0].normal.y, 0.8, 1e-12);
+  assert_near_abs (m.points[0].depth, 0.1, 1e-12);
+  assert_int_equal (collide_polygon_circle (&box, place (0, 0, 0), v2 (1.3, 1.4), 0.4, 0, &m), 0);
+  /* centre inside the box: pushed out through the nearest face */
+  assert_int_equal (collide_polygon_circle (&box, place (0, 0, 0), v2 (0.9, 0.1), 0.2, 0, &m), 1);
+  assert_near_abs (m.points[0].normal.x, 1.0, 1e-15);
+  assert_near_abs (m.points[0].depth, 0.3, 1e-12);
+}
+
+/* ---------------------------------------------------------- resolution */
+
+typedef struct two_body {
+  carom_world *w;
+  carom_body_id a, b;
+} two_body;
+
+static carom_world *new_world (double restitution)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_world_def_init (&def);
+  def.restitution = restitution;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  return w;
+}
+
+/* Step until no contact remains and the bodies move apart. */
+static void run_collision (carom_world *w, int max_steps)
+{
+  int step, touched = 0;
+  for (step = 0; step < max_steps; ++step)
+    {
+      assert_status (carom_world_update (w, 1.0 / 120), CAROM_OK);
+      if (carom_world_contact_count (w) > 0)
+        touched = 1;
+      else if (touched)
+        return;
+    }
+  assert_true (touched);
+}
+
+static void test_equal_masses_head_on_swap_velocities (void **state)
+{
+  carom_world *w = new_world (1.0);
+  carom_body_def d;
+  carom_body_id a, b;
+  double va, vb, vy;
+  (void) state;
+  carom_body_def_init (&d);
+  d.x = -1.5, d.vx = 2.0;
+  assert_status (carom_world_add_circle (w, &d, 0.5, &a), CAROM_OK);
+  d.x = 1.5, d.vx = -1.0;
+  assert_status (carom_world_add_circle (w, &d, 0.5, &b), CAROM_OK);
+  run_collision (w, 1000);
+  carom_body_get_velocity (w, a, &va, &vy);
+  carom_body_get_velocity (w, b, &vb, NULL);
+  assert_near_rel (va, -1.0, 1e-12);
+  assert_near_rel (vb, 2.0, 1e-12);
+  assert_near_abs (vy, 0.0, 1e-15);
+  carom_world_destroy (w);
+}
+
+/* Off-centre hits between spinning polygons of different masses: momentum
+ * to 1e-12 and, with e = 1, kinetic energy (rotation included) to 1e-9;
+ * angular momentum about a fixed point is conserved too. */
+static void test_off_centre_elastic_conserves_energy_and_momentum (void **state)
+{
+  int trial;
+  (void) state;
+  for (trial = 0; trial < 12; ++trial)
+    {
+      carom_world *w = new_world (1.0);
+      carom_body_def d;
+      carom_body_id a, b;
+      double e0, e1, px0, py0, l0, px1, py1, l1;
+      const double tri[] = {0, 0, 1.2, 0.1, 0.3, 0.9};
+      carom_body_def_init (&d);
+      d.x = -2.0, d.y = 0.08 * trial - 0.45, d.vx = 3.0 + 0.1 * trial, d.vy = 0.05, d.spin = 0.7 - 0.1 * trial;
+      d.angle = 0.37 * trial;
+      assert_status (carom_world_add_box (w, &d, 1.0, 0.6, &a), CAROM_OK);
+      carom_body_def_init (&d);
+      d.x = 1.0, d.y = 0.1, d.vx = -1.0, d.vy = -0.02 * trial, d.spin = -1.3, d.density = 2.5, d.angle = -0.21 * trial;
+      if (trial % 2)
+        assert_status (carom_world_add_polygon (w, &d, tri, 3, &b), CAROM_OK);
+      else
+        assert_status (carom_world_add_regular (w, &d, 5, 0.7, &b), CAROM_OK);
+      e0 = world_kinetic_energy (w);
+      world_momentum (w, &px0, &py0, &l0);
+      run_collision (w, 2000);
+      e1 = world_kinetic_energy (w);
+      world_momentum (w, &px1, &py1, &l1);
+      assert_near_rel (e1, e0, 1e-9);
+      assert_near_abs (px1, px0, 1e-12 * (fabs (px0) + fabs (py0) + 1));
+      assert_near_abs (py1, py0, 1e-12 * (fabs (px0) + fabs (py0) + 1));
+      assert_near_abs (l1, l0, 1e-12 * (fabs (l0) + 1));
+      carom_world_destroy (w);
+    }
+}
+
+/* With e = 0 the contact points stop approaching: zero relative normal
+ * velocity right after the impact (measured on the contact normal). */
+static void test_inelastic_relative_normal_velocity_is_zero (void **state)
+{
+  carom_world *w = new_world (0.0);
+  carom_body_def d;
+  carom_body_id a, b;
+  double va, vb, e0, e1;
+  (void) state;
+  carom_body_def_init (&d);
+  d.x = -1.0, d.vx = 4.0;
+  assert_status (carom_world_add_box (w, &d, 1, 1, &a), CAROM_OK);
+  d.x = 1.0, d.vx = 0.0, d.density = 3.0;
+  assert_status (carom_world_add_box (w, &d, 1, 1, &b), CAROM_OK);
+  e0 = world_kinetic_energy (w);
+  while (carom_world_contact_count (w) == 0)
+    carom_world_update (w, 1.0 / 120);
+  /* the first contact was speculative (the gap closes within the step); the
+   * next step has them touching */
+  carom_world_update (w, 1.0 / 120);
+  carom_body_get_velocity (w, a, &va, NULL);
+  carom_body_get_velocity (w, b, &vb, NULL);
+  assert_near_rel (va, vb, 1e-12);
+  assert_near_rel (va, 4.0 / 4.0, 1e-12); /* m v / (m + 3m) */
+  e1 = world_kinetic_energy (w);
+  assert_true (e1 < e0);
+  carom_world_destroy (w);
+}
+
+/* Partial restitution: the separation speed is e times the approach speed. */
+static void test_restitution_scales_separation_speed (void **state)
+{
+  carom_world *w = new_world (0.5);
+  carom_body_def d;
+  carom_body_id a, b;
+  double va, vb;
+  (void) state;
+  carom_body_def_init (&d);
+  d.x = -1.0, d.vx = 3.0;
+  assert_status (carom_world_add_circle (w, &d, 0.4, &a), CAROM_OK);
+  d.x = 1.0, d.vx = -1.0;
+  assert_status (carom_world_add_circle (w, &d, 0.4, &b), CAROM_OK);
+  run_collision (w, 1000);
+  carom_body_get_velocity (w, a, &va, NULL);
+  carom_body_get_velocity (w, b, &vb, NULL);
+  assert_near_rel (vb - va, 0.5 * 4.0, 1e-12);
+  assert_near_rel (va + vb, 2.0, 1e-12);
+  carom_world_destroy (w);
+}
+
+/* A box dropped flat on a static floor comes to rest on it, without
+ * jitter, sinking no more than the slop. */
+static void test_box_rests_on_floor (void **state)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_body_def d;
+  carom_body_id box;
+  double y, vy, angle, y_prev = 0;
+  int step;
+  (void) state;
+  carom_world_def_init (&def);
+  def.gravity_y = -10;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  carom_body_def_init (&d);
+  d.type = CAROM_STATIC;
+  d.y = -0.5;
+  assert_status (carom_world_add_box (w, &d, 20, 1, NULL), CAROM_OK);
+  carom_body_def_init (&d);
+  d.y = 1.0;
+  assert_status (carom_world_add_box (w, &d, 1, 1, &box), CAROM_OK);
+  for (step = 0; step < 600; ++step)
+    {
+      carom_world_update (w, 1.0 / 60);
+      carom_body_get_position (w, box, NULL, &y);
+      if (step > 300)
+        assert_near_abs (y, y_prev, 1e-9); /* at rest: no jitter */
+      y_prev = y;
+    }
+  carom_body_get_velocity (w, box, NULL, &vy);
+  carom_body_get_angle (w, box, &angle);
+  assert_true (y > 0.5 - 0.01 * 0.5 - 1e-9 && y <= 0.5 + 1e-9);
+  assert_near_abs (angle, 0.0, 1e-12);
+  assert_int_equal (carom_world_contact_count (w), 2);
+  carom_world_destroy (w);
+}
+
+int main (void)
+{
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test (test_sat_face_contact_has_two_clipped_points),
+    cmocka_unit_test (test_sat_rotated_corner),
+    cmocka_unit_test (test_sat_separated_touching_margin),
+    cmocka_unit_test (test_sat_deep_inside_has_unit_normal),
+    cmocka_unit_test (test_circles),
+    cmocka_unit_test (test_equal_masses_head_on_swap_velocities),
+    cmocka_unit_test (test_off_centre_elastic_conserves_energy_and_momentum),
+    cmocka_unit_test (test_inelastic_relative_normal_velocity_is_zero),
+    cmocka_unit_test (test_restitution_scales_separation_speed),
+    cmocka_unit_test (test_box_rests_on_floor),
+  };
+  return cmocka_run_group_tests_name ("collision", tests, NULL, NULL);
+}

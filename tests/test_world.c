@@ -1,0 +1,181 @@
+/* The world's lifecycle, settings, and free motion against closed forms. */
+#include "support.h"
+
+#include <math.h>
+
+static void test_init_destroy_and_null (void **state)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  (void) state;
+  carom_world_destroy (NULL); /* safe */
+  assert_status (carom_world_init (NULL, NULL), CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_world_update (NULL, 0.1), CAROM_ERR_NULL_ARGUMENT);
+  carom_world_def_init (&def);
+  assert_int_equal (def.size, sizeof def);
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  assert_non_null (w);
+  assert_int_equal (carom_world_body_count (w), 0);
+  assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+  carom_world_destroy (w);
+  assert_true (carom_version () == CAROM_VERSION);
+  assert_string_equal (carom_status_string (CAROM_OK), "ok");
+  assert_string_equal (carom_status_string ((carom_status) 999), "unknown status");
+}
+
+static void test_bad_world_defs (void **state)
+{
+  carom_world *w = (carom_world *) 1;
+  carom_world_def def;
+  (void) state;
+  carom_world_def_init (&def);
+  def.gravity_y = NAN;
+  assert_status (carom_world_init (&w, &def), CAROM_ERR_NOT_FINITE);
+  assert_null (w);
+  carom_world_def_init (&def);
+  def.restitution = 1.01;
+  assert_status (carom_world_init (&w, &def), CAROM_ERR_BAD_ARGUMENT);
+  carom_world_def_init (&def);
+  def.substeps = 0;
+  assert_status (carom_world_init (&w, &def), CAROM_ERR_BAD_ARGUMENT);
+  carom_world_def_init (&def);
+  def.iterations = -3;
+  assert_status (carom_world_init (&w, &def), CAROM_ERR_BAD_ARGUMENT);
+  carom_world_def_init (&def);
+  def.size = 8;
+  assert_status (carom_world_init (&w, &def), CAROM_ERR_BAD_STRUCT_SIZE);
+  assert_null (w);
+}
+
+static void test_bad_time_step_changes_nothing (void **state)
+{
+  carom_world *w = *state;
+  carom_body_id id;
+  carom_body_def def;
+  const double bad[] = {0.0, -0.01, NAN, INFINITY, -INFINITY};
+  size_t i;
+  double x, y, vx, vy;
+  carom_body_def_init (&def);
+  def.vx = 1.0;
+  carom_world_set_gravity (w, 0, -10);
+  assert_status (carom_world_add_circle (w, &def, 1.0, &id), CAROM_OK);
+  for (i = 0; i < sizeof bad / sizeof bad[0]; ++i)
+    assert_status (carom_world_update (w, bad[i]), CAROM_ERR_BAD_TIME_STEP);
+  carom_body_get_position (w, id, &x, &y);
+  carom_body_get_velocity (w, id, &vx, &vy);
+  assert_true (x == 0.0 && y == 0.0 && vx == 1.0 && vy == 0.0);
+  assert_status (carom_world_set_gravity (w, NAN, 0), CAROM_ERR_NOT_FINITE);
+  carom_world_get_gravity (w, &x, &y);
+  assert_true (x == 0.0 && y == -10.0);
+}
+
+/* Leapfrog integration is exact for uniform gravity: the closed form
+ * x = x0 + v0 t + g t^2 / 2 holds to rounding after any number of steps. */
+static void test_projectile_matches_closed_form (void **state)
+{
+  carom_world *w = *state;
+  carom_body_def def;
+  carom_body_id id;
+  const double g = -9.81, dt = 1.0 / 60, vx0 = 3.0, vy0 = 12.0;
+  double x, y, vx, vy, angle;
+  int step;
+  carom_world_set_gravity (w, 0.0, g);
+  carom_body_def_init (&def);
+  def.x = 1.0, def.y = 2.0, def.vx = vx0, def.vy = vy0, def.spin = 0.5;
+  assert_status (carom_world_add_regular (w, &def, 5, 0.3, &id), CAROM_OK);
+  for (step = 1; step <= 300; ++step)
+    {
+      double t = step * dt;
+      assert_status (carom_world_update (w, dt), CAROM_OK);
+      carom_body_get_position (w, id, &x, &y);
+      carom_body_get_velocity (w, id, &vx, &vy);
+      carom_body_get_angle (w, id, &angle);
+      assert_near_rel (x, 1.0 + vx0 * t, 1e-12);
+      assert_near_abs (y, 2.0 + vy0 * t + 0.5 * g * t * t, 1e-11);
+      assert_near_abs (vy, vy0 + g * t, 1e-11);
+      assert_near_rel (angle, 0.5 * t, 1e-12);
+    }
+}
+
+static void test_free_fall_with_substeps (void **state)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_body_def bd;
+  carom_body_id id;
+  double y;
+  int step;
+  (void) state;
+  carom_world_def_init (&def);
+  def.gravity_y = -9.81;
+  def.substeps = 4;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  carom_body_def_init (&bd);
+  bd.y = 100.0;
+  assert_status (carom_world_add_box (w, &bd, 1, 1, &id), CAROM_OK);
+  for (step = 0; step < 120; ++step)
+    carom_world_update (w, 1.0 / 60);
+  carom_body_get_position (w, id, NULL, &y);
+  assert_near_rel (y, 100.0 - 0.5 * 9.81 * 4.0, 1e-12);
+  carom_world_destroy (w);
+}
+
+/* Two worlds in one process do not see each other. */
+static void test_two_worlds_are_independent (void **state)
+{
+  carom_world *a = NULL, *b = NULL;
+  carom_body_id ia, ib;
+  double ya, yb;
+  int step;
+  (void) state;
+  assert_status (carom_world_init (&a, NULL), CAROM_OK);
+  assert_status (carom_world_init (&b, NULL), CAROM_OK);
+  carom_world_set_gravity (a, 0, -10);
+  assert_status (carom_world_add_circle (a, NULL, 1.0, &ia), CAROM_OK);
+  assert_status (carom_world_add_circle (b, NULL, 1.0, &ib), CAROM_OK);
+  assert_true (ia == ib); /* the same first id in each world ... */
+  for (step = 0; step < 10; ++step)
+    {
+      carom_world_update (a, 0.1);
+      carom_world_update (b, 0.1);
+    }
+  carom_body_get_position (a, ia, NULL, &ya);
+  carom_body_get_position (b, ib, NULL, &yb);
+  assert_near_rel (ya, -0.5 * 10 * 1.0, 1e-12); /* ... but separate bodies */
+  assert_true (yb == 0.0);
+  carom_world_remove_body (a, ia);
+  assert_status (carom_body_check (b, ib), CAROM_OK);
+  carom_world_destroy (a);
+  assert_status (carom_world_update (b, 0.1), CAROM_OK);
+  carom_world_destroy (b);
+}
+
+static void test_get_bodies (void **state)
+{
+  carom_world *w = *state;
+  carom_body_id ids[3], out[3];
+  int i;
+  for (i = 0; i < 3; ++i)
+    assert_status (carom_world_add_circle (w, NULL, 1.0 + i, &ids[i]), CAROM_OK);
+  assert_int_equal (carom_world_get_bodies (w, NULL, 0), 3);
+  assert_int_equal (carom_world_get_bodies (w, out, 3), 3);
+  for (i = 0; i < 3; ++i)
+    assert_true (out[i] == ids[i]);
+  carom_world_remove_body (w, ids[1]);
+  assert_int_equal (carom_world_get_bodies (w, out, 1), 2);
+  assert_true (out[0] == ids[0]);
+}
+
+int main (void)
+{
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test (test_init_destroy_and_null),
+    cmocka_unit_test (test_bad_world_defs),
+    cmocka_unit_test_setup_teardown (test_bad_time_step_changes_nothing, world_setup, world_teardown),
+    cmocka_unit_test_setup_teardown (test_projectile_matches_closed_form, world_setup, world_teardown),
+    cmocka_unit_test (test_free_fall_with_substeps),
+    cmocka_unit_test (test_two_worlds_are_independent),
+    cmocka_unit_test_setup_teardown (test_get_bodies, world_setup, world_teardown),
+  };
+  return cmocka_run_group_tests_name ("world", tests, NULL, NULL);
+}
