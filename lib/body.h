@@ -26,6 +26,7 @@ typedef struct body {
    * touches v and w, so it adds no kinetic energy */
   vec2 pv;
   double pw;
+  int32_t touching; /* had a contact this sub-step (set by the solver) */
 } body;
 
 struct carom_world;

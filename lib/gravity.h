@@ -1,5 +1,5 @@
-/* Gravity: uniform acceleration applied as two half kicks around the drift
- * (leapfrog), which is exact for constant acceleration. */
+/* Gravity: uniform acceleration, a velocity kick before the solver sees the
+ * velocities (the drift makes free flight exact; see world.c). */
 #ifndef CAROM_GRAVITY_H
 #define CAROM_GRAVITY_H
 

@@ -61,29 +61,59 @@ static void prepare (carom_world *world, double h)
     {
       contact *k = &c->list[i];
       body *a = &world->bodies[k->a], *b = &world->bodies[k->b];
+      double vn[MANIFOLD_MAX_POINTS];
+      int impact = 0;
+      a->touching = b->touching = 1;
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
-          vec2 t = v2_perp (p->normal);
-          double vn;
           p->ra = v2_sub (p->point, a->p);
           p->rb = v2_sub (p->point, b->p);
           p->normal_mass = effective_mass (a, b, p->ra, p->rb, p->normal); /* eq. 3.23's denominator */
-          p->tangent_mass = effective_mass (a, b, p->ra, p->rb, t);
-          vn = v2_dot (relative_velocity (a, b, p), p->normal);
-          if (k->restitution > 0.0 && vn < -threshold && vn * h - p->depth < 0.0)
-            /* an impact within this sub-step: eq. 3.18, the points separate
-             * at e times the approach speed */
-            p->target = -k->restitution * vn;
-          else
-            /* a speculative point (apart by -depth) may close its gap but
-             * not pass it; a touching one may not approach */
-            p->target = p->depth < 0.0 ? p->depth / h : 0.0;
+          p->tangent_mass = effective_mass (a, b, p->ra, p->rb, v2_perp (p->normal));
+          vn[j] = v2_dot (relative_velocity (a, b, p), p->normal);
+          /* an impact: a point approaching faster than the threshold that
+           * reaches the other body within this sub-step */
+          if (k->restitution > 0.0 && vn[j] < -threshold && vn[j] * h - p->depth < 0.0)
+            impact = 1;
           p->bias = p->depth > k->slop ? beta * (p->depth - k->slop) / h : 0.0;
           p->pseudo_impulse = 0.0;
           if (k->friction == 0.0)
             p->tangent_impulse = 0.0;
-          /* warm start with last step's impulses */
+        }
+      for (j = 0; j < k->count; ++j)
+        {
+          contact_point *p = &k->points[j];
+          if (impact)
+            /* eq. 3.18 at every point of the manifold: each may leave at e
+             * times its own approach speed. Then the impulses change the
+             * kinetic energy by sum_i j_i (v_i,before + v_i,after) / 2, which
+             * is zero for e = 1 at the exact solution: elastic impacts
+             * conserve energy even with several points at once. */
+            p->target = -k->restitution * vn[j];
+          else
+            {
+              /* a speculative point (apart by -depth) may close its gap but
+               * not pass it; a touching one may not approach */
+              p->target = p->depth < 0.0 ? p->depth / h : 0.0;
+              /* a separating point that other impacts push back gets eq.
+               * 3.18 too, so a chain of bodies hit at once stays elastic
+               * (the same energy argument as above) */
+              if (k->restitution > 0.0 && vn[j] > 0.0 && -k->restitution * vn[j] < p->target)
+                p->target = -k->restitution * vn[j];
+            }
+        }
+    }
+  /* warm start with last step's impulses, only once every target above was
+   * measured on the velocities before any impulse */
+  for (i = 0; i < c->count; ++i)
+    {
+      contact *k = &c->list[i];
+      body *a = &world->bodies[k->a], *b = &world->bodies[k->b];
+      for (j = 0; j < k->count; ++j)
+        {
+          contact_point *p = &k->points[j];
+          vec2 t = v2_perp (p->normal);
           apply_impulse (a, b, p, v2_add (v2_scale (p->normal, p->normal_impulse), v2_scale (t, p->tangent_impulse)));
         }
     }

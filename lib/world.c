@@ -1,5 +1,5 @@
 /* The world and its update pipeline, in the flying-balls lifecycle:
- * init, update (per sub-step: detect, half kick, solve, drift, half kick),
+ * init, update (per sub-step: detect, gravity, solve, drift),
  * destroy. */
 #include "world.h"
 
@@ -80,19 +80,27 @@ void carom_world_destroy (carom_world *world)
 }
 
 /* Move every dynamic body with its velocity plus the position-correction
- * pseudo-velocity, which is then dropped. */
+ * pseudo-velocity, which is then dropped. A free body moves with the mean of
+ * its velocities before and after the gravity kick, x += (v - g h / 2) h,
+ * which is exact for uniform gravity (x0 + v0 t + g t^2 / 2 at every step);
+ * a body in contact moves with the velocity the solver left it (symplectic
+ * Euler), so a body at rest stays exactly at rest with zero velocity. */
 static void drift (carom_world *world, double h)
 {
+  vec2 half_kick = v2_scale (world->gravity, 0.5 * h);
   int32_t i;
   for (i = 0; i < world->slot_count; ++i)
     {
       body *b = &world->bodies[i];
+      vec2 v;
       if (!b->alive || b->type == CAROM_STATIC)
         continue;
-      b->p = v2_mad (b->p, h, v2_add (b->v, b->pv));
+      v = b->touching ? b->v : v2_sub (b->v, half_kick);
+      b->p = v2_mad (b->p, h, v2_add (v, b->pv));
       b->angle += h * (b->w + b->pw);
       b->pv = v2 (0.0, 0.0);
       b->pw = 0.0;
+      b->touching = 0;
       body_sync (b);
     }
 }
@@ -105,10 +113,9 @@ static carom_status substep (carom_world *world, double h)
   world->step_h = 0.0;
   if (st != CAROM_OK)
     return st;
-  gravity_update (world, 0.5 * h);
+  gravity_update (world, h);
   solver_update (world, h);
   drift (world, h);
-  gravity_update (world, 0.5 * h);
   return CAROM_OK;
 }
 
