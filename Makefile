@@ -54,7 +54,7 @@ $(BUILD)/libcarom.so: $(SO_REAL)
 
 # ---------------------------------------------------------------- tests
 deps-check:
-	@tools/ensure-deps build check
+	@tools/ensure-deps build check demo
 
 tests: $(TEST_BIN)
 
@@ -65,9 +65,17 @@ $(BUILD)/tests/%.o: tests/%.c
 $(BUILD)/tests/test_%: $(BUILD)/tests/test_%.o $(BUILD)/tests/support.o $(BUILD)/libcarom.a
 	$(CC) $(LDFLAGS) -o $@ $^ -lcmocka -lm
 
+# Every test: the cmocka binaries under Valgrind, the README's example, and
+# each part's own checks (runner, demo under Xvfb, ABI, install, bindings)
+# when its fragment is present.
+CHECK_PARTS := $(if $(wildcard mk/runner.mk),check-runner) $(if $(wildcard mk/demo.mk),check-demo) \
+               $(if $(wildcard mk/bindings.mk),check-bindings)
+
 check: deps-check
 	@$(MAKE) --no-print-directory tests lib
 	@tools/run-tests "$(VALGRIND)" $(TEST_BIN)
+	@tools/check-readme $(BUILD)
+	@for part in $(CHECK_PARTS); do $(MAKE) --no-print-directory $$part || exit 1; done
 
 clean:
 	rm -rf $(BUILD)

@@ -1,0 +1,736 @@
+/* Scene files: a line-oriented text format (docs/scenes.md) loaded into a new
+ * world. The text is read twice. The first pass checks every line and
+ * collects the world settings, which carom_world_init needs before any body
+ * exists; the second creates the world and adds the bodies. The first pass
+ * already catches every error a well-formed world can report, so the first
+ * error by line order is the one reported, and a failure in the second pass
+ * (out of memory, too many bodies) destroys the half-built world: a caller
+ * never sees part of a scene. */
+#include "alloc.h"
+#include "carom.h"
+#include "shape.h"
+
+#include <errno.h>
+#include <locale.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Body options, as bits so a statement can list the ones it accepts. */
+enum {
+  OPT_AT = 1u << 0,
+  OPT_ANGLE = 1u << 1,
+  OPT_VELOCITY = 1u << 2,
+  OPT_SPIN = 1u << 3,
+  OPT_DENSITY = 1u << 4,
+  OPT_RESTITUTION = 1u << 5,
+  OPT_FRICTION = 1u << 6,
+  OPT_STATIC = 1u << 7
+};
+#define OPT_MATERIAL (OPT_RESTITUTION | OPT_FRICTION)
+#define OPT_BODY (OPT_AT | OPT_ANGLE | OPT_VELOCITY | OPT_SPIN | OPT_DENSITY | OPT_MATERIAL | OPT_STATIC)
+
+typedef struct scene_option {
+  const char *word;
+  int count; /* numbers that follow the word */
+  unsigned bit;
+} scene_option;
+
+static const scene_option scene_options[] = {
+  { "at", 2, OPT_AT },
+  { "angle", 1, OPT_ANGLE },
+  { "velocity", 2, OPT_VELOCITY },
+  { "spin", 1, OPT_SPIN },
+  { "density", 1, OPT_DENSITY },
+  { "restitution", 1, OPT_RESTITUTION },
+  { "friction", 1, OPT_FRICTION },
+  { "static", 0, OPT_STATIC },
+};
+
+typedef struct scene_parser {
+  carom_allocator allocator; /* the caller's, from def: all scratch memory */
+  carom_world_def def;       /* the settings the scene builds up */
+  carom_world *world;        /* NULL in the checking pass */
+  int32_t line;
+  carom_status status;
+  char message[sizeof ((carom_scene_error *) 0)->message];
+
+  /* the current line: a NUL-terminated copy, split into tokens in place */
+  char *buf;
+  int32_t buf_cap;
+  char **tok;
+  int32_t tok_count, tok_cap;
+
+  /* what the statement's dispatcher parsed for its handler */
+  double *num;
+  int32_t num_count, num_cap;
+  unsigned opts;             /* options given */
+  carom_body_def body;       /* options applied to the defaults */
+} scene_parser;
+
+/* When a statement's handler runs: settings fill p->def in the first pass
+ * only (the world is created from them); the others run in both passes and
+ * add bodies in the second, when p->world is set. */
+typedef enum scene_kind { SCENE_SETTING, SCENE_BODY } scene_kind;
+
+/* One statement: its word, the numbers that follow (max_numbers < 0: any
+ * count), the options it accepts after them, and the handler. A statement
+ * whose arguments are words (names, not numbers) sets `words`: the
+ * dispatcher then leaves the tokens p->tok[1..] to the handler. */
+typedef struct scene_statement {
+  const char *word;
+  scene_kind kind;
+  int32_t min_numbers, max_numbers;
+  unsigned options;
+  int words;
+  const char *usage;
+  carom_status (*run) (scene_parser *p);
+} scene_statement;
+
+/* ---------------------------------------------------------------- errors */
+
+/* Record the error for the current line and return `cause`, so handlers can
+ * `return scene_fail (...)`. The message starts with the line number. */
+static carom_status scene_fail (scene_parser *p, carom_status cause, const char *fmt, ...)
+{
+  va_list ap;
+  int n = 0;
+  p->status = cause;
+  if (p->line > 0)
+    n = snprintf (p->message, sizeof p->message, "%ld: ", (long) p->line);
+  if (n < 0 || (size_t) n >= sizeof p->message)
+    n = 0;
+  va_start (ap, fmt);
+  vsnprintf (p->message + n, sizeof p->message - (size_t) n, fmt, ap);
+  va_end (ap);
+  return cause;
+}
+
+static void scene_report (const scene_parser *p, carom_scene_error *error)
+{
+  if (!error || error->size != sizeof (carom_scene_error))
+    return;
+  error->line = p->status == CAROM_OK ? 0 : p->line;
+  error->cause = p->status;
+  memcpy (error->message, p->message, sizeof error->message);
+  error->message[sizeof error->message - 1] = '\0';
+}
+
+/* --------------------------------------------------------------- numbers */
+
+static int scene_is_digit (char c)
+{
+  return c >= '0' && c <= '9';
+}
+
+static int scene_lower (char c)
+{
+  return c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c;
+}
+
+static int scene_same_word (const char *a, const char *lower)
+{
+  while (*a && *lower && scene_lower (*a) == *lower)
+    ++a, ++lower;
+  return *a == '\0' && *lower == '\0';
+}
+
+/* A plain decimal: [+-] (D+ [. D*] | . D+) [(e|E) [+-] D+]. Hex floats and
+ * the words strtod knows are left out on purpose: the format is meant to be
+ * read by people and by other tools. */
+static int scene_is_decimal (const char *s)
+{
+  int digits = 0;
+  if (*s == '+' || *s == '-')
+    ++s;
+  while (scene_is_digit (*s))
+    ++s, ++digits;
+  if (*s == '.')
+    for (++s; scene_is_digit (*s); ++s)
+      ++digits;
+  if (!digits)
+    return 0;
+  if (*s == 'e' || *s == 'E')
+    {
+      ++s;
+      if (*s == '+' || *s == '-')
+        ++s;
+      if (!scene_is_digit (*s))
+        return 0;
+      while (scene_is_digit (*s))
+        ++s;
+    }
+  return *s == '\0';
+}
+
+static int scene_is_non_finite (const char *s)
+{
+  if (*s == '+' || *s == '-')
+    ++s;
+  return scene_same_word (s, "nan") || scene_same_word (s, "inf") || scene_same_word (s, "infinity");
+}
+
+/* Tokens that are meant as numbers (even bad ones) rather than words. */
+static int scene_looks_numeric (const char *s)
+{
+  return scene_is_digit (*s) || *s == '+' || *s == '-' || *s == '.' || scene_is_non_finite (s);
+}
+
+/* strtod reads the decimal point of the C library's current locale, which a
+ * GUI program (gtk_init calls setlocale) may have set to ','. Scene files
+ * always use '.', so swap it for the locale's before converting. */
+static carom_status scene_strtod (scene_parser *p, char *s, double *out)
+{
+  const char *point = localeconv ()->decimal_point;
+  char *dot = strchr (s, '.');
+  size_t plen = strlen (point);
+  if (!dot || (plen == 1 && point[0] == '.'))
+    *out = strtod (s, NULL);
+  else if (plen == 1)
+    {
+      *dot = point[0];
+      *out = strtod (s, NULL);
+      *dot = '.';
+    }
+  else
+    {
+      /* a multi-byte decimal point: convert a rewritten copy */
+      size_t head = (size_t) (dot - s), len = strlen (s);
+      char *copy = mem_alloc (&p->allocator, len + plen);
+      if (!copy)
+        return scene_fail (p, CAROM_ERR_OUT_OF_MEMORY, "out of memory");
+      memcpy (copy, s, head);
+      memcpy (copy + head, point, plen);
+      memcpy (copy + head + plen, dot + 1, len - head); /* with the NUL */
+      *out = strtod (copy, NULL);
+      mem_free (&p->allocator, copy, len + plen);
+    }
+  return CAROM_OK;
+}
+
+/* Convert a token that must be a finite number. */
+static carom_status scene_number (scene_parser *p, char *tok, double *out)
+{
+  carom_status s;
+  if (scene_is_non_finite (tok))
+    return scene_fail (p, CAROM_ERR_NOT_FINITE, "%s: '%s' is not a finite number", p->tok[0], tok);
+  if (!scene_is_decimal (tok))
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: '%s' is not a number", p->tok[0], tok);
+  s = scene_strtod (p, tok, out);
+  if (s != CAROM_OK)
+    return s;
+  if (!isfinite (*out)) /* overflowed: an underflow to 0 or a denormal is fine */
+    return scene_fail (p, CAROM_ERR_NOT_FINITE, "%s: '%s' is too large", p->tok[0], tok);
+  return CAROM_OK;
+}
+
+/* A count: a whole number in [lo, hi]. */
+static carom_status scene_count (scene_parser *p, double v, const char *what, double lo, double hi,
+                                 carom_status range_status, int32_t *out)
+{
+  if (v != floor (v))
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: %s must be a whole number, got %g", p->tok[0], what, v);
+  if (v < lo || v > hi)
+    return scene_fail (p, range_status, "%s: %s must be between %.0f and %.0f, got %.0f", p->tok[0], what, lo, hi, v);
+  *out = (int32_t) v;
+  return CAROM_OK;
+}
+
+static carom_status scene_positive (scene_parser *p, double v, const char *what, carom_status status)
+{
+  if (v > 0.0)
+    return CAROM_OK;
+  return scene_fail (p, status, "%s: %s must be positive, got %g", p->tok[0], what, v);
+}
+
+static carom_status scene_restitution (scene_parser *p, double e)
+{
+  if (e >= 0.0 && e <= 1.0)
+    return CAROM_OK;
+  return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "%s: restitution must be between 0 and 1, got %g", p->tok[0], e);
+}
+
+static carom_status scene_friction (scene_parser *p, double mu)
+{
+  if (mu >= 0.0)
+    return CAROM_OK;
+  return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "%s: friction must be 0 or more, got %g", p->tok[0], mu);
+}
+
+/* ------------------------------------------------------------- handlers */
+
+static carom_status scene_do_gravity (scene_parser *p)
+{
+  p->def.gravity_x = p->num[0];
+  p->def.gravity_y = p->num[1];
+  return CAROM_OK;
+}
+
+static carom_status scene_do_restitution (scene_parser *p)
+{
+  carom_status s = scene_restitution (p, p->num[0]);
+  if (s == CAROM_OK)
+    p->def.restitution = p->num[0];
+  return s;
+}
+
+static carom_status scene_do_friction (scene_parser *p)
+{
+  carom_status s = scene_friction (p, p->num[0]);
+  if (s == CAROM_OK)
+    p->def.friction = p->num[0];
+  return s;
+}
+
+static carom_status scene_do_substeps (scene_parser *p)
+{
+  return scene_count (p, p->num[0], "K", 1, INT32_MAX, CAROM_ERR_BAD_ARGUMENT, &p->def.substeps);
+}
+
+static carom_status scene_do_iterations (scene_parser *p)
+{
+  return scene_count (p, p->num[0], "N", 1, INT32_MAX, CAROM_ERR_BAD_ARGUMENT, &p->def.iterations);
+}
+
+/* Name the line's body in an error from the world (second pass only). */
+static carom_status scene_added (scene_parser *p, carom_status s)
+{
+  if (s == CAROM_OK)
+    return s;
+  return scene_fail (p, s, "%s: %s", p->tok[0], carom_status_string (s));
+}
+
+/* Walls of thickness 5% of the smaller side, outside the rectangle; the top
+ * and bottom walls run past the corners so the box has no gaps. */
+static carom_status scene_do_bounds (scene_parser *p)
+{
+  double x0 = p->num[0], y0 = p->num[1], x1 = p->num[2], y1 = p->num[3];
+  double w = x1 - x0, h = y1 - y0, t, cx, cy;
+  carom_body_def d = p->body;
+  carom_status s = CAROM_OK;
+  if (!isfinite (w) || !isfinite (h))
+    return scene_fail (p, CAROM_ERR_NOT_FINITE, "bounds: the rectangle is too large");
+  if (w <= 0.0 || h <= 0.0)
+    return scene_fail (p, CAROM_ERR_BAD_SIZE, "bounds: need X0 < X1 and Y0 < Y1");
+  if (!p->world)
+    return CAROM_OK;
+  t = 0.05 * (w < h ? w : h);
+  cx = 0.5 * (x0 + x1);
+  cy = 0.5 * (y0 + y1);
+  d.type = CAROM_STATIC;
+  d.x = cx, d.y = y0 - 0.5 * t;
+  s = carom_world_add_box (p->world, &d, w + 2.0 * t, t, NULL);
+  d.x = cx, d.y = y1 + 0.5 * t;
+  if (s == CAROM_OK)
+    s = carom_world_add_box (p->world, &d, w + 2.0 * t, t, NULL);
+  d.x = x0 - 0.5 * t, d.y = cy;
+  if (s == CAROM_OK)
+    s = carom_world_add_box (p->world, &d, t, h, NULL);
+  d.x = x1 + 0.5 * t, d.y = cy;
+  if (s == CAROM_OK)
+    s = carom_world_add_box (p->world, &d, t, h, NULL);
+  return scene_added (p, s);
+}
+
+static carom_status scene_do_circle (scene_parser *p)
+{
+  carom_status s = scene_positive (p, p->num[0], "radius R", CAROM_ERR_BAD_SIZE);
+  if (s != CAROM_OK || !p->world)
+    return s;
+  return scene_added (p, carom_world_add_circle (p->world, &p->body, p->num[0], NULL));
+}
+
+static carom_status scene_do_box (scene_parser *p)
+{
+  carom_status s = scene_positive (p, p->num[0], "width W", CAROM_ERR_BAD_SIZE);
+  if (s == CAROM_OK)
+    s = scene_positive (p, p->num[1], "height H", CAROM_ERR_BAD_SIZE);
+  if (s != CAROM_OK || !p->world)
+    return s;
+  return scene_added (p, carom_world_add_box (p->world, &p->body, p->num[0], p->num[1], NULL));
+}
+
+static carom_status scene_do_regular (scene_parser *p)
+{
+  int32_t n = 0;
+  carom_status s;
+  if (p->num[0] < 3)
+    s = scene_count (p, p->num[0], "N", 3, CAROM_MAX_POLYGON_VERTICES, CAROM_ERR_TOO_FEW_VERTICES, &n);
+  else
+    s = scene_count (p, p->num[0], "N", 3, CAROM_MAX_POLYGON_VERTICES, CAROM_ERR_TOO_MANY_VERTICES, &n);
+  if (s == CAROM_OK)
+    s = scene_positive (p, p->num[1], "side length", CAROM_ERR_BAD_SIZE);
+  if (s != CAROM_OK || !p->world)
+    return s;
+  return scene_added (p, carom_world_add_regular (p->world, &p->body, n, p->num[1], NULL));
+}
+
+static carom_status scene_do_polygon (scene_parser *p)
+{
+  int32_t n = p->num_count / 2;
+  carom_status s;
+  if (p->num_count % 2)
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "polygon: vertices come in X Y pairs, got %ld numbers",
+                       (long) p->num_count);
+  if (n < 3)
+    return scene_fail (p, CAROM_ERR_TOO_FEW_VERTICES, "polygon: needs at least 3 vertices, got %ld", (long) n);
+  if (n > CAROM_MAX_POLYGON_VERTICES)
+    return scene_fail (p, CAROM_ERR_TOO_MANY_VERTICES, "polygon: at most %d vertices, got %ld",
+                       CAROM_MAX_POLYGON_VERTICES, (long) n);
+  if (!p->world)
+    {
+      /* the world's own check, so the first pass sees geometry errors too */
+      s = polygon_validate (p->num, n);
+      if (s != CAROM_OK)
+        return scene_fail (p, s, "polygon: %s", carom_status_string (s));
+      return CAROM_OK;
+    }
+  return scene_added (p, carom_world_add_polygon (p->world, &p->body, p->num, n, NULL));
+}
+
+/* The statement table: a new statement is one row here plus its handler. */
+static const scene_statement scene_statements[] = {
+  { "gravity", SCENE_SETTING, 2, 2, 0, 0, "gravity GX GY", scene_do_gravity },
+  { "restitution", SCENE_SETTING, 1, 1, 0, 0, "restitution E", scene_do_restitution },
+  { "friction", SCENE_SETTING, 1, 1, 0, 0, "friction MU", scene_do_friction },
+  { "substeps", SCENE_SETTING, 1, 1, 0, 0, "substeps K", scene_do_substeps },
+  { "iterations", SCENE_SETTING, 1, 1, 0, 0, "iterations N", scene_do_iterations },
+  { "bounds", SCENE_BODY, 4, 4, OPT_MATERIAL, 0, "bounds X0 Y0 X1 Y1 [restitution E] [friction MU]", scene_do_bounds },
+  { "circle", SCENE_BODY, 1, 1, OPT_BODY, 0, "circle R [options]", scene_do_circle },
+  { "box", SCENE_BODY, 2, 2, OPT_BODY, 0, "box W H [options]", scene_do_box },
+  { "regular", SCENE_BODY, 2, 2, OPT_BODY, 0, "regular N SIDE [options]", scene_do_regular },
+  { "polygon", SCENE_BODY, 6, -1, OPT_BODY, 0, "polygon X1 Y1 X2 Y2 X3 Y3 ... [options]", scene_do_polygon },
+};
+
+/* ------------------------------------------------------------ dispatcher */
+
+static const scene_option *scene_find_option (const char *word)
+{
+  size_t i;
+  for (i = 0; i < sizeof scene_options / sizeof scene_options[0]; ++i)
+    if (strcmp (word, scene_options[i].word) == 0)
+      return &scene_options[i];
+  return NULL;
+}
+
+static carom_status scene_push_number (scene_parser *p, double v)
+{
+  if (!mem_reserve (&p->allocator, (void **) &p->num, &p->num_cap, p->num_count + 1, sizeof *p->num))
+    return scene_fail (p, CAROM_ERR_OUT_OF_MEMORY, "out of memory");
+  p->num[p->num_count++] = v;
+  return CAROM_OK;
+}
+
+/* Apply option `opt` whose numbers are v[] to the body def. */
+static carom_status scene_apply_option (scene_parser *p, const scene_option *opt, const double *v)
+{
+  carom_body_def *b = &p->body;
+  carom_status s = CAROM_OK;
+  switch (opt->bit)
+    {
+    case OPT_AT: b->x = v[0], b->y = v[1]; break;
+    case OPT_ANGLE: b->angle = v[0]; break;
+    case OPT_VELOCITY: b->vx = v[0], b->vy = v[1]; break;
+    case OPT_SPIN: b->spin = v[0]; break;
+    case OPT_DENSITY:
+      s = scene_positive (p, v[0], "density", CAROM_ERR_BAD_DENSITY);
+      b->density = v[0];
+      break;
+    case OPT_RESTITUTION:
+      s = scene_restitution (p, v[0]);
+      b->restitution = v[0];
+      break;
+    case OPT_FRICTION:
+      s = scene_friction (p, v[0]);
+      b->friction = v[0];
+      break;
+    case OPT_STATIC: b->type = CAROM_STATIC; break;
+    }
+  return s;
+}
+
+/* Parse the numbers and options after the statement word into p->num and
+ * p->body. */
+static carom_status scene_arguments (scene_parser *p, const scene_statement *st)
+{
+  int32_t i = 1;
+  carom_status s;
+  while (i < p->tok_count && scene_looks_numeric (p->tok[i]))
+    {
+      double v;
+      if (st->max_numbers >= 0 && p->num_count == st->max_numbers)
+        return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: too many numbers (usage: %s)", st->word, st->usage);
+      s = scene_number (p, p->tok[i++], &v);
+      if (s == CAROM_OK)
+        s = scene_push_number (p, v);
+      if (s != CAROM_OK)
+        return s;
+    }
+  if (p->num_count < st->min_numbers)
+    {
+      if (i < p->tok_count && !scene_find_option (p->tok[i]))
+        return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: expected a number, got '%s' (usage: %s)", st->word,
+                           p->tok[i], st->usage);
+      return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: missing numbers (usage: %s)", st->word, st->usage);
+    }
+
+  while (i < p->tok_count)
+    {
+      const char *word = p->tok[i++];
+      const scene_option *opt = scene_find_option (word);
+      double v[2];
+      int k;
+      if (scene_looks_numeric (word))
+        return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: unexpected number '%s' (usage: %s)", st->word, word,
+                           st->usage);
+      if (!opt || !(opt->bit & st->options))
+        {
+          if (!st->options)
+            return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: unexpected '%s' (usage: %s)", st->word, word,
+                               st->usage);
+          return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: unknown option '%s'", st->word, word);
+        }
+      if (p->opts & opt->bit)
+        return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: option '%s' given twice", st->word, word);
+      p->opts |= opt->bit;
+      for (k = 0; k < opt->count; ++k)
+        {
+          if (i >= p->tok_count || !scene_looks_numeric (p->tok[i]))
+            return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: option '%s' needs %d number%s", st->word, word,
+                               opt->count, opt->count > 1 ? "s" : "");
+          s = scene_number (p, p->tok[i++], &v[k]);
+          if (s != CAROM_OK)
+            return s;
+        }
+      s = scene_apply_option (p, opt, v);
+      if (s != CAROM_OK)
+        return s;
+    }
+  if (p->body.type == CAROM_STATIC && (p->opts & (OPT_VELOCITY | OPT_SPIN)))
+    return scene_fail (p, CAROM_ERR_STATIC_BODY, "%s: a static body cannot have a velocity or spin", st->word);
+  return CAROM_OK;
+}
+
+/* Would carom_world_init accept these settings? */
+static carom_status scene_check_def (const carom_world_def *def)
+{
+  carom_world *trial = NULL;
+  carom_status s = carom_world_init (&trial, def);
+  carom_world_destroy (trial);
+  return s;
+}
+
+static carom_status scene_statement_run (scene_parser *p)
+{
+  const scene_statement *st = NULL;
+  carom_status s;
+  size_t i;
+  for (i = 0; i < sizeof scene_statements / sizeof scene_statements[0]; ++i)
+    if (strcmp (p->tok[0], scene_statements[i].word) == 0)
+      st = &scene_statements[i];
+  if (!st)
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "unknown statement '%s'", p->tok[0]);
+  if (p->world && st->kind == SCENE_SETTING)
+    return CAROM_OK; /* applied in the first pass */
+  p->num_count = 0;
+  p->opts = 0;
+  carom_body_def_init (&p->body);
+  if (!st->words)
+    {
+      s = scene_arguments (p, st);
+      if (s != CAROM_OK)
+        return s;
+    }
+  s = st->run (p);
+  if (s == CAROM_OK && st->kind == SCENE_SETTING)
+    {
+      /* The world knows its own limits (substeps <= 1000, ...): ask it now,
+       * so an out-of-range setting is reported on its line. */
+      s = scene_check_def (&p->def);
+      if (s != CAROM_OK)
+        return scene_fail (p, s, "%s: the world rejects this setting: %s", st->word, carom_status_string (s));
+    }
+  return s;
+}
+
+/* ----------------------------------------------------------------- lines */
+
+static int scene_is_space (char c)
+{
+  return c == ' ' || c == '\t' || c == '\v' || c == '\f';
+}
+
+/* Copy text[0, len) into p->buf, cut the comment and split into tokens. */
+static carom_status scene_split (scene_parser *p, const char *text, size_t len)
+{
+  char *c;
+  if (len >= (size_t) INT32_MAX)
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "line longer than %ld bytes", (long) INT32_MAX - 1);
+  if (memchr (text, '\0', len))
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "line contains a NUL byte");
+  if (!mem_reserve (&p->allocator, (void **) &p->buf, &p->buf_cap, (int32_t) len + 1, 1))
+    return scene_fail (p, CAROM_ERR_OUT_OF_MEMORY, "out of memory");
+  memcpy (p->buf, text, len);
+  p->buf[len] = '\0';
+  c = strchr (p->buf, '#');
+  if (c)
+    *c = '\0';
+
+  p->tok_count = 0;
+  for (c = p->buf;;)
+    {
+      while (scene_is_space (*c))
+        ++c;
+      if (!*c)
+        break;
+      if (!mem_reserve (&p->allocator, (void **) &p->tok, &p->tok_cap, p->tok_count + 1, sizeof *p->tok))
+        return scene_fail (p, CAROM_ERR_OUT_OF_MEMORY, "out of memory");
+      p->tok[p->tok_count++] = c;
+      while (*c && !scene_is_space (*c))
+        ++c;
+      if (*c)
+        *c++ = '\0';
+    }
+  return CAROM_OK;
+}
+
+/* One pass over the text; stops at the first error. */
+static carom_status scene_pass (scene_parser *p, const char *text, size_t length)
+{
+  size_t at = 0;
+  p->line = 0;
+  /* a UTF-8 byte order mark, as some editors write */
+  if (length >= 3 && memcmp (text, "\xEF\xBB\xBF", 3) == 0)
+    at = 3;
+  while (at < length)
+    {
+      size_t end = at;
+      carom_status s;
+      while (end < length && text[end] != '\n' && text[end] != '\r')
+        ++end;
+      ++p->line;
+      s = scene_split (p, text + at, end - at);
+      if (s == CAROM_OK && p->tok_count > 0)
+        s = scene_statement_run (p);
+      if (s != CAROM_OK)
+        return s;
+      /* "\n", "\r\n" and a lone "\r" each end one line */
+      if (end < length && text[end] == '\r' && end + 1 < length && text[end + 1] == '\n')
+        ++end;
+      at = end + 1;
+    }
+  p->line = 0;
+  return CAROM_OK;
+}
+
+static void scene_parser_destroy (scene_parser *p)
+{
+  mem_free (&p->allocator, p->buf, (size_t) p->buf_cap);
+  mem_free (&p->allocator, p->tok, (size_t) p->tok_cap * sizeof *p->tok);
+  mem_free (&p->allocator, p->num, (size_t) p->num_cap * sizeof *p->num);
+}
+
+/* Start from the caller's settings, or the defaults. */
+static carom_status scene_parser_init (scene_parser *p, const carom_world_def *def)
+{
+  carom_status s;
+  memset (p, 0, sizeof *p);
+  carom_world_def_init (&p->def);
+  if (def)
+    {
+      if (def->size != sizeof (carom_world_def))
+        return scene_fail (p, CAROM_ERR_BAD_STRUCT_SIZE, "the world def's size field is %lu, expected %lu",
+                           (unsigned long) def->size, (unsigned long) sizeof (carom_world_def));
+      p->def = *def;
+    }
+  /* checked before its allocator is used for scratch memory */
+  s = scene_check_def (&p->def);
+  if (s != CAROM_OK)
+    return scene_fail (p, s, "the world def is rejected: %s", carom_status_string (s));
+  p->allocator = p->def.allocator;
+  return CAROM_OK;
+}
+
+carom_status carom_scene_load_text (carom_world **world, const char *text, size_t length, const carom_world_def *def,
+                                    carom_scene_error *error)
+{
+  scene_parser p;
+  carom_status s;
+  if (world)
+    *world = NULL;
+  s = scene_parser_init (&p, def);
+  if (s == CAROM_OK && (!world || (!text && length > 0)))
+    s = scene_fail (&p, CAROM_ERR_NULL_ARGUMENT, "%s is NULL", world ? "text" : "world");
+  if (s == CAROM_OK)
+    s = scene_pass (&p, text, length);
+  if (s == CAROM_OK)
+    {
+      s = carom_world_init (&p.world, &p.def);
+      if (s != CAROM_OK)
+        scene_fail (&p, s, "the world settings were rejected: %s", carom_status_string (s));
+    }
+  if (s == CAROM_OK)
+    s = scene_pass (&p, text, length);
+  if (s == CAROM_OK)
+    {
+      *world = p.world;
+      p.message[0] = '\0';
+    }
+  else
+    carom_world_destroy (p.world);
+  scene_report (&p, error);
+  scene_parser_destroy (&p);
+  return s;
+}
+
+carom_status carom_scene_load_file (carom_world **world, const char *path, const carom_world_def *def,
+                                    carom_scene_error *error)
+{
+  scene_parser p;
+  carom_status s;
+  FILE *f = NULL;
+  char *text = NULL;
+  size_t len = 0, cap = 0;
+  if (world)
+    *world = NULL;
+  s = scene_parser_init (&p, def);
+  if (s == CAROM_OK && (!world || !path))
+    s = scene_fail (&p, CAROM_ERR_NULL_ARGUMENT, "%s is NULL", world ? "path" : "world");
+  if (s == CAROM_OK && !(f = fopen (path, "rb")))
+    s = scene_fail (&p, CAROM_ERR_IO, "cannot open: %s", strerror (errno));
+  while (s == CAROM_OK)
+    {
+      size_t got;
+      if (len == cap)
+        {
+          size_t new_cap = cap ? 2 * cap : 4096;
+          char *t = new_cap > cap ? mem_realloc (&p.allocator, text, cap, new_cap) : NULL;
+          if (!t)
+            {
+              s = scene_fail (&p, CAROM_ERR_OUT_OF_MEMORY, "out of memory reading the file");
+              break;
+            }
+          text = t;
+          cap = new_cap;
+        }
+      got = fread (text + len, 1, cap - len, f);
+      len += got;
+      if (got == 0)
+        {
+          if (ferror (f))
+            s = scene_fail (&p, CAROM_ERR_IO, "cannot read: %s", strerror (errno));
+          break;
+        }
+    }
+  if (f)
+    fclose (f);
+  if (s == CAROM_OK)
+    s = carom_scene_load_text (world, text, len, def, error);
+  else
+    scene_report (&p, error);
+  mem_free (&p.allocator, text, cap);
+  scene_parser_destroy (&p);
+  return s;
+}

@@ -1,0 +1,589 @@
+/* Scene loading: good text gives the bodies and settings it describes; any
+ * bad line is reported with its line and cause and creates nothing. */
+#include "support.h"
+
+#include <locale.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const double pi = 3.14159265358979323846;
+
+static carom_world *load (const char *text)
+{
+  carom_world *w = NULL;
+  carom_scene_error err;
+  err.size = sizeof err;
+  if (carom_scene_load_text (&w, text, strlen (text), NULL, &err) != CAROM_OK)
+    fail_msg ("scene rejected: %s", err.message);
+  assert_non_null (w);
+  return w;
+}
+
+/* The id of the i-th body in creation order. */
+static carom_body_id body_at (const carom_world *w, int32_t i)
+{
+  carom_body_id ids[64];
+  int32_t n = carom_world_get_bodies (w, ids, 64);
+  assert_true (i < n && i < 64);
+  return ids[i];
+}
+
+static void test_settings_and_bodies (void **state)
+{
+  const char *text = "# a small scene\n"
+                     "gravity 0.5 -9.81\n"
+                     "restitution 0.25\n"
+                     "friction 0.4\n"
+                     "substeps 2\n"
+                     "iterations 12\n"
+                     "circle 0.5 at 1 2 velocity 3 -4 spin 1.5 density 2\n"
+                     "box 2 1 at -1 0.5 angle 0.3 density 3 restitution 0.9 friction 0.1\n"
+                     "regular 4 2 at 0 -3 static\n"
+                     "polygon 0 0 3 0 0 3 at 5 5\n";
+  carom_world *w = load (text);
+  carom_body_id id;
+  carom_body_type type;
+  carom_shape_kind kind;
+  double gx, gy, x, y, vx, vy, a, m, inertia, area, r, e, mu;
+  (void) state;
+
+  assert_int_equal (carom_world_body_count (w), 4);
+  assert_status (carom_world_get_gravity (w, &gx, &gy), CAROM_OK);
+  assert_near_rel (gx, 0.5, 1e-15);
+  assert_near_rel (gy, -9.81, 1e-15);
+
+  id = body_at (w, 0);
+  assert_status (carom_body_get_shape (w, id, &kind, &r), CAROM_OK);
+  assert_int_equal (kind, CAROM_SHAPE_CIRCLE);
+  assert_near_rel (r, 0.5, 1e-15);
+  carom_body_get_position (w, id, &x, &y);
+  assert_near_rel (x, 1.0, 1e-15);
+  assert_near_rel (y, 2.0, 1e-15);
+  carom_body_get_velocity (w, id, &vx, &vy);
+  assert_near_rel (vx, 3.0, 1e-15);
+  assert_near_rel (vy, -4.0, 1e-15);
+  carom_body_get_spin (w, id, &a);
+  assert_near_rel (a, 1.5, 1e-15);
+  carom_body_get_mass (w, id, &m, &inertia, &area);
+  assert_near_rel (m, 2.0 * pi * 0.25, 1e-12);
+  assert_near_rel (inertia, 0.5 * m * 0.25, 1e-12);
+  /* no material options: the scene's world defaults */
+  carom_body_get_material (w, id, &e, &mu);
+  assert_near_rel (e, 0.25, 1e-15);
+  assert_near_rel (mu, 0.4, 1e-15);
+
+  id = body_at (w, 1);
+  carom_body_get_position (w, id, &x, &y);
+  assert_near_rel (x, -1.0, 1e-15);
+  assert_near_rel (y, 0.5, 1e-15);
+  carom_body_get_angle (w, id, &a);
+  assert_near_rel (a, 0.3, 1e-15);
+  carom_body_get_mass (w, id, &m, &inertia, NULL);
+  assert_near_rel (m, 6.0, 1e-12);
+  assert_near_rel (inertia, 6.0 * 5.0 / 12.0, 1e-12);
+  carom_body_get_material (w, id, &e, &mu);
+  assert_near_rel (e, 0.9, 1e-15);
+  assert_near_rel (mu, 0.1, 1e-15);
+  carom_body_get_type (w, id, &type);
+  assert_int_equal (type, CAROM_DYNAMIC);
+
+  id = body_at (w, 2);
+  carom_body_get_type (w, id, &type);
+  assert_int_equal (type, CAROM_STATIC);
+  carom_body_get_mass (w, id, &m, NULL, &area);
+  assert_true (m == 0.0);
+  assert_near_rel (area, 4.0, 1e-12);
+
+  /* the polygon's centroid (1, 1) goes to `at` */
+  id = body_at (w, 3);
+  carom_body_get_position (w, id, &x, &y);
+  assert_near_rel (x, 5.0, 1e-12);
+  assert_near_rel (y, 5.0, 1e-12);
+  carom_body_get_mass (w, id, &m, NULL, NULL);
+  assert_near_rel (m, 4.5, 1e-12);
+  {
+    double xy[6], lo_x = 1e9, lo_y = 1e9;
+    int32_t n, i;
+    assert_status (carom_body_get_vertices (w, id, xy, 3, &n), CAROM_OK);
+    assert_int_equal (n, 3);
+    for (i = 0; i < 3; ++i)
+      {
+        lo_x = fmin (lo_x, xy[2 * i]);
+        lo_y = fmin (lo_y, xy[2 * i + 1]);
+      }
+    assert_near_abs (lo_x, 4.0, 1e-12);
+    assert_near_abs (lo_y, 4.0, 1e-12);
+  }
+  carom_world_destroy (w);
+}
+
+/* bounds: four static walls outside the rectangle, thickness 5% of the
+ * smaller side, with the line's material. */
+static void test_bounds (void **state)
+{
+  carom_world *w = load ("bounds 0 0 10 4 restitution 1 friction 0\ncircle 1 at 5 2\n");
+  double lo_x = 1e9, lo_y = 1e9, hi_x = -1e9, hi_y = -1e9;
+  int32_t i;
+  (void) state;
+  assert_int_equal (carom_world_body_count (w), 5);
+  for (i = 0; i < 4; ++i)
+    {
+      carom_body_id id = body_at (w, i);
+      carom_body_type type;
+      double xy[8], e, mu;
+      int32_t n, k;
+      carom_body_get_type (w, id, &type);
+      assert_int_equal (type, CAROM_STATIC);
+      carom_body_get_material (w, id, &e, &mu);
+      assert_true (e == 1.0 && mu == 0.0);
+      carom_body_get_vertices (w, id, xy, 4, &n);
+      assert_int_equal (n, 4);
+      for (k = 0; k < 4; ++k)
+        {
+          double x = xy[2 * k], y = xy[2 * k + 1];
+          lo_x = fmin (lo_x, x), hi_x = fmax (hi_x, x);
+          lo_y = fmin (lo_y, y), hi_y = fmax (hi_y, y);
+          /* nothing of a wall inside the rectangle */
+          assert_false (x > 1e-12 && x < 10 - 1e-12 && y > 1e-12 && y < 4 - 1e-12);
+        }
+    }
+  assert_near_abs (lo_x, -0.2, 1e-12);
+  assert_near_abs (hi_x, 10.2, 1e-12);
+  assert_near_abs (lo_y, -0.2, 1e-12);
+  assert_near_abs (hi_y, 4.2, 1e-12);
+  carom_world_destroy (w);
+}
+
+static void test_comments_blank_lines_crlf (void **state)
+{
+  const char *variants[] = {
+    "# header\n\n   \ncircle 1 at 1 2 # trailing comment\n\t box\t2 3  at 4 5\n# end",
+    "# header\r\n\r\n   \r\ncircle 1 at 1 2 # trailing comment\r\n\t box\t2 3  at 4 5\r\n# end\r\n",
+    "# header\r\r   \rcircle 1 at 1 2 # trailing comment\r\t box\t2 3  at 4 5\r# end\r",
+    "\xEF\xBB\xBF# header\n\ncircle 1 at 1 2#comment right after\nbox 2 3 at 4 5\n",
+  };
+  size_t k;
+  (void) state;
+  for (k = 0; k < sizeof variants / sizeof variants[0]; ++k)
+    {
+      carom_world *w = load (variants[k]);
+      double x, y;
+      assert_int_equal (carom_world_body_count (w), 2);
+      carom_body_get_position (w, body_at (w, 1), &x, &y);
+      assert_true (x == 4.0 && y == 5.0);
+      carom_world_destroy (w);
+    }
+}
+
+static void test_empty_and_comment_only (void **state)
+{
+  carom_world *w = load ("");
+  (void) state;
+  assert_int_equal (carom_world_body_count (w), 0);
+  carom_world_destroy (w);
+  w = load ("# nothing here\n\n");
+  assert_int_equal (carom_world_body_count (w), 0);
+  carom_world_destroy (w);
+  /* text need not be NUL-terminated: only `length` bytes are read */
+  {
+    carom_world *w2 = NULL;
+    assert_status (carom_scene_load_text (&w2, "circle 1circle 2", 8, NULL, NULL), CAROM_OK);
+    assert_int_equal (carom_world_body_count (w2), 1);
+    carom_world_destroy (w2);
+  }
+}
+
+/* Settings are applied before any body, wherever they are written; a later
+ * setting overrides an earlier one. */
+static void test_settings_order (void **state)
+{
+  carom_world *w = load ("circle 1\ngravity 0 -1\nrestitution 0.5\ngravity 0 -2\n");
+  double gx, gy, e;
+  (void) state;
+  carom_world_get_gravity (w, &gx, &gy);
+  assert_true (gx == 0.0 && gy == -2.0);
+  carom_body_get_material (w, body_at (w, 0), &e, NULL);
+  assert_true (e == 0.5);
+  carom_world_destroy (w);
+}
+
+/* def supplies what the scene does not set. */
+static void test_def_defaults (void **state)
+{
+  carom_world_def def;
+  carom_world *w = NULL;
+  double gx, gy;
+  const char *t1 = "circle 1\n", *t2 = "gravity 1 2\n";
+  (void) state;
+  carom_world_def_init (&def);
+  def.gravity_y = -3.0;
+  assert_status (carom_scene_load_text (&w, t1, strlen (t1), &def, NULL), CAROM_OK);
+  carom_world_get_gravity (w, &gx, &gy);
+  assert_true (gx == 0.0 && gy == -3.0);
+  carom_world_destroy (w);
+  assert_status (carom_scene_load_text (&w, t2, strlen (t2), &def, NULL), CAROM_OK);
+  carom_world_get_gravity (w, &gx, &gy);
+  assert_true (gx == 1.0 && gy == 2.0);
+  carom_world_destroy (w);
+
+  def.size = 3;
+  w = (carom_world *) &def; /* must be reset to NULL */
+  assert_status (carom_scene_load_text (&w, t1, strlen (t1), &def, NULL), CAROM_ERR_BAD_STRUCT_SIZE);
+  assert_null (w);
+}
+
+typedef struct bad_case {
+  const char *text;
+  int32_t line;
+  carom_status cause;
+} bad_case;
+
+static const bad_case bad_cases[] = {
+  { "circle 1\nsphere 2\n", 2, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 at 0 0 colour 3\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1\n\nbox 1 at 0 0\n", 3, CAROM_ERR_SCENE_SYNTAX },             /* missing H */
+  { "circle\n", 1, CAROM_ERR_SCENE_SYNTAX },                                /* missing R */
+  { "circle 1 2\n", 1, CAROM_ERR_SCENE_SYNTAX },                            /* one too many */
+  { "circle 1 at 0\n", 1, CAROM_ERR_SCENE_SYNTAX },                         /* missing Y */
+  { "circle 1 at 0 y\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1.5x\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 at 0x10 0\n", 1, CAROM_ERR_SCENE_SYNTAX },                    /* no hex */
+  { "circle 1 at 1,5 0\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "circle abc\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 at 0 0 at 1 1\n", 1, CAROM_ERR_SCENE_SYNTAX },                /* twice */
+  { "circle 1 static 3\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "gravity 0 -10 static\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "bounds 0 0 1 1 at 2 2\n", 1, CAROM_ERR_SCENE_SYNTAX },                 /* not a bounds option */
+  { "circle nan\n", 1, CAROM_ERR_NOT_FINITE },
+  { "circle 1 at inf 0\n", 1, CAROM_ERR_NOT_FINITE },
+  { "circle 1 velocity -Infinity 0\n", 1, CAROM_ERR_NOT_FINITE },
+  { "gravity 0 1e999\n", 1, CAROM_ERR_NOT_FINITE },
+  { "circle -1\n", 1, CAROM_ERR_BAD_SIZE },
+  { "circle 0\n", 1, CAROM_ERR_BAD_SIZE },
+  { "box 1 -2\n", 1, CAROM_ERR_BAD_SIZE },
+  { "bounds 0 0 -1 1\n", 1, CAROM_ERR_BAD_SIZE },
+  { "regular 5 0\n", 1, CAROM_ERR_BAD_SIZE },
+  { "circle 1 density 0\n", 1, CAROM_ERR_BAD_DENSITY },
+  { "circle 1 restitution 1.5\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 friction -0.1\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "restitution -1\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "friction -1\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "substeps 0\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "substeps 1000000\n", 1, CAROM_ERR_BAD_ARGUMENT },                      /* the world's limit */
+  { "substeps 1.5\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "iterations 0\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "regular 2 1\n", 1, CAROM_ERR_TOO_FEW_VERTICES },
+  { "regular 5000 1\n", 1, CAROM_ERR_TOO_MANY_VERTICES },
+  { "regular 4.5 1\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "polygon 0 0 1 0 1 1 0\n", 1, CAROM_ERR_SCENE_SYNTAX },                 /* odd count */
+  { "polygon 0 0 1 0\n", 1, CAROM_ERR_SCENE_SYNTAX },                       /* fewer than 6 numbers */
+  { "polygon 0 0 2 2 2 0 0 2\n", 1, CAROM_ERR_SELF_INTERSECTING },          /* bow tie */
+  { "polygon 0 0 1 0 1 0 0 1\n", 1, CAROM_ERR_REPEATED_VERTEX },
+  { "polygon 0 0 1 1 2 2\n", 1, CAROM_ERR_ZERO_AREA },
+  { "circle 1 static velocity 1 0\n", 1, CAROM_ERR_STATIC_BODY },
+  /* errors after good bodies, and a later line's error after good lines */
+  { "circle 1\r\nbox 1 1\r\n# c\r\nbox 1 1 at 0 zero\r\n", 4, CAROM_ERR_SCENE_SYNTAX },
+  { "polygon 0 0 1 0 0 1 at 1 1\nregular 6 1\ncircle 1 density -2\n", 3, CAROM_ERR_BAD_DENSITY },
+};
+
+static void test_bad_lines (void **state)
+{
+  size_t k;
+  (void) state;
+  for (k = 0; k < sizeof bad_cases / sizeof bad_cases[0]; ++k)
+    {
+      const bad_case *c = &bad_cases[k];
+      carom_world *w = (carom_world *) &k; /* must come back NULL */
+      carom_scene_error err;
+      char prefix[32];
+      size_t len = strlen (c->text);
+      carom_status s;
+      memset (&err, 0x55, sizeof err);
+      err.size = sizeof err;
+      s = carom_scene_load_text (&w, c->text, len, NULL, &err);
+      if (s != c->cause || err.line != c->line || err.cause != c->cause)
+        fail_msg ("case %zu %s: status %d, line %d, cause %d (%s); wanted line %d cause %d", k, c->text, (int) s,
+                  (int) err.line, (int) err.cause, err.message, (int) c->line, (int) c->cause);
+      assert_null (w);
+      snprintf (prefix, sizeof prefix, "%d: ", (int) c->line);
+      if (strncmp (err.message, prefix, strlen (prefix)) != 0 || strlen (err.message) < strlen (prefix) + 5)
+        fail_msg ("case %zu: message '%s'", k, err.message);
+    }
+}
+
+/* A few messages read as they should. */
+static void test_messages (void **state)
+{
+  struct {
+    const char *text, *message;
+  } cases[] = {
+    { "\nsphere 2\n", "2: unknown statement 'sphere'" },
+    { "circle 1 colour 3\n", "1: circle: unknown option 'colour'" },
+    { "circle 1.5x\n", "1: circle: '1.5x' is not a number" },
+    { "circle -1\n", "1: circle: radius R must be positive, got -1" },
+    { "polygon 0 0 2 2 2 0 0 2\n", "1: polygon: the polygon's edges cross or touch each other" },
+  };
+  size_t k;
+  (void) state;
+  for (k = 0; k < sizeof cases / sizeof cases[0]; ++k)
+    {
+      carom_world *w = NULL;
+      carom_scene_error err;
+      err.size = sizeof err;
+      carom_scene_load_text (&w, cases[k].text, strlen (cases[k].text), NULL, &err);
+      assert_null (w);
+      assert_string_equal (err.message, cases[k].message);
+    }
+}
+
+/* `length` counts, not the NUL: a NUL byte inside the text is an error. */
+static void test_nul_byte (void **state)
+{
+  static const char text[] = "circle 1\nbox 1 1 at 0 0\0 box 1 1\n";
+  carom_world *w = NULL;
+  carom_scene_error err;
+  (void) state;
+  err.size = sizeof err;
+  assert_status (carom_scene_load_text (&w, text, sizeof text - 1, NULL, &err), CAROM_ERR_SCENE_SYNTAX);
+  assert_null (w);
+  assert_int_equal (err.line, 2);
+}
+
+static void test_error_struct_optional (void **state)
+{
+  carom_world *w = NULL;
+  carom_scene_error err;
+  const char *bad = "circle -1\n", *good = "circle 1\n";
+  (void) state;
+  assert_status (carom_scene_load_text (&w, bad, strlen (bad), NULL, NULL), CAROM_ERR_BAD_SIZE);
+  assert_null (w);
+  /* a wrong size field: the struct is left alone */
+  memset (&err, 0x55, sizeof err);
+  err.size = 12;
+  assert_status (carom_scene_load_text (&w, bad, strlen (bad), NULL, &err), CAROM_ERR_BAD_SIZE);
+  assert_int_equal (err.line, 0x55555555);
+  /* success clears it */
+  err.size = sizeof err;
+  assert_status (carom_scene_load_text (&w, good, strlen (good), NULL, &err), CAROM_OK);
+  assert_int_equal (err.line, 0);
+  assert_int_equal (err.cause, CAROM_OK);
+  assert_string_equal (err.message, "");
+  carom_world_destroy (w);
+}
+
+static void test_null_arguments (void **state)
+{
+  carom_world *w = NULL;
+  carom_scene_error err;
+  (void) state;
+  err.size = sizeof err;
+  assert_status (carom_scene_load_text (NULL, "circle 1", 8, NULL, &err), CAROM_ERR_NULL_ARGUMENT);
+  assert_int_equal (err.line, 0);
+  assert_status (carom_scene_load_text (&w, NULL, 8, NULL, &err), CAROM_ERR_NULL_ARGUMENT);
+  assert_null (w);
+  assert_status (carom_scene_load_file (&w, NULL, NULL, &err), CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_scene_load_file (NULL, "scenes/thesis.scene", NULL, &err), CAROM_ERR_NULL_ARGUMENT);
+}
+
+/* No line-length limit: a 200-vertex polygon on one line. */
+static void test_long_line (void **state)
+{
+  size_t cap = 200 * 64 + 64, len = 0;
+  char *text = malloc (cap);
+  carom_world *w;
+  int32_t i, n;
+  double area;
+  (void) state;
+  len += (size_t) snprintf (text + len, cap - len, "polygon");
+  for (i = 0; i < 200; ++i)
+    {
+      double t = 2.0 * pi * i / 200.0;
+      len += (size_t) snprintf (text + len, cap - len, " %.17g %.17g", 3.0 * cos (t), 3.0 * sin (t));
+    }
+  snprintf (text + len, cap - len, " at 1 2 angle 0.5\n");
+  w = load (text);
+  free (text);
+  carom_body_get_vertices (w, body_at (w, 0), NULL, 0, &n);
+  assert_int_equal (n, 200);
+  carom_body_get_mass (w, body_at (w, 0), NULL, NULL, &area);
+  assert_near_rel (area, 0.5 * 200 * 9.0 * sin (2.0 * pi / 200.0), 1e-9);
+  carom_world_destroy (w);
+}
+
+/* Counting allocator: all scratch memory goes through the caller's
+ * allocator, nothing is left behind, and an allocation failure anywhere gives
+ * OUT_OF_MEMORY and no world. */
+typedef struct counting {
+  long live, calls, fail_at;
+} counting;
+
+static void *counting_alloc (size_t size, void *user)
+{
+  counting *c = user;
+  if (c->fail_at >= 0 && c->calls++ >= c->fail_at)
+    return NULL; /* calls are only counted while failures are injected */
+  c->live++;
+  return malloc (size);
+}
+
+static void counting_free (void *p, size_t size, void *user)
+{
+  counting *c = user;
+  (void) size;
+  c->live--;
+  free (p);
+}
+
+static void test_allocator_and_out_of_memory (void **state)
+{
+  const char *text = "gravity 0 -10\nbounds 0 0 10 10\npolygon 0 0 1 0 1 1 0.5 0.2 0 1 at 5 5\nregular 7 1 at 2 2\n";
+  counting c = { 0, 0, -1 };
+  carom_world_def def;
+  carom_world *w = NULL;
+  long k;
+  (void) state;
+  carom_world_def_init (&def);
+  def.allocator.alloc = counting_alloc;
+  def.allocator.free = counting_free;
+  def.allocator.user = &c;
+  assert_status (carom_scene_load_text (&w, text, strlen (text), &def, NULL), CAROM_OK);
+  assert_int_equal (carom_world_body_count (w), 6);
+  carom_world_destroy (w);
+  assert_int_equal (c.live, 0);
+
+  for (k = 0;; ++k)
+    {
+      carom_status s;
+      carom_scene_error err;
+      err.size = sizeof err;
+      c.calls = 0;
+      c.fail_at = k;
+      s = carom_scene_load_text (&w, text, strlen (text), &def, &err);
+      if (s == CAROM_OK)
+        {
+          carom_world_destroy (w);
+          break;
+        }
+      assert_status (s, CAROM_ERR_OUT_OF_MEMORY);
+      assert_null (w);
+      assert_int_equal (c.live, 0);
+      assert_true (k < 10000);
+    }
+  assert_int_equal (c.live, 0);
+  assert_true (k > 3);
+}
+
+/* Numbers use '.' whatever the C locale says. */
+static void test_locale_independent (void **state)
+{
+  const char *locales[] = { "de_DE.UTF-8", "de_DE.utf8", "fr_FR.UTF-8", "ru_RU.UTF-8" };
+  size_t k;
+  (void) state;
+  for (k = 0; k < sizeof locales / sizeof locales[0]; ++k)
+    if (setlocale (LC_NUMERIC, locales[k]))
+      break;
+  if (k == sizeof locales / sizeof locales[0])
+    {
+      setlocale (LC_NUMERIC, "C");
+      skip ();
+    }
+  {
+    carom_world *w = load ("circle 0.5 at 1.25 -2.5e-1\n");
+    double x, y, r;
+    carom_body_get_position (w, body_at (w, 0), &x, &y);
+    carom_body_get_shape (w, body_at (w, 0), NULL, &r);
+    setlocale (LC_NUMERIC, "C");
+    assert_true (x == 1.25 && y == -0.25 && r == 0.5);
+    carom_world_destroy (w);
+  }
+}
+
+static void test_file_errors (void **state)
+{
+  carom_world *w = (carom_world *) &w; /* must come back NULL */
+  carom_scene_error err;
+  (void) state;
+  err.size = sizeof err;
+  assert_status (carom_scene_load_file (&w, "scenes/no-such-file.scene", NULL, &err), CAROM_ERR_IO);
+  assert_null (w);
+  assert_int_equal (err.line, 0);
+  assert_int_equal (err.cause, CAROM_ERR_IO);
+  assert_non_null (strstr (err.message, "No such file"));
+  /* a directory opens but cannot be read */
+  assert_status (carom_scene_load_file (&w, "scenes", NULL, &err), CAROM_ERR_IO);
+  assert_null (w);
+}
+
+/* Every shipped scene loads, with the body count it promises. */
+static void test_shipped_scenes (void **state)
+{
+  struct {
+    const char *path;
+    int32_t min_bodies, max_bodies;
+  } scenes[] = {
+    { "scenes/thesis.scene", 13, 13 },
+    { "scenes/balls.scene", 54, 54 },
+    { "scenes/pyramid.scene", 211, 211 },
+    { "scenes/rain.scene", 2003, 2003 },
+    { "scenes/gas.scene", 504, 504 },
+  };
+  size_t k;
+  (void) state;
+  for (k = 0; k < sizeof scenes / sizeof scenes[0]; ++k)
+    {
+      carom_world *w = NULL;
+      carom_scene_error err;
+      int32_t n;
+      err.size = sizeof err;
+      if (carom_scene_load_file (&w, scenes[k].path, NULL, &err) != CAROM_OK)
+        fail_msg ("%s:%s", scenes[k].path, err.message);
+      n = carom_world_body_count (w);
+      if (n < scenes[k].min_bodies || n > scenes[k].max_bodies)
+        fail_msg ("%s: %d bodies", scenes[k].path, (int) n);
+      carom_world_destroy (w);
+    }
+}
+
+/* gas.scene promises bodies that do not overlap at the start. */
+static void test_gas_starts_apart (void **state)
+{
+  carom_world *w = NULL;
+  int32_t i, n;
+  (void) state;
+  assert_status (carom_scene_load_file (&w, "scenes/gas.scene", NULL, NULL), CAROM_OK);
+  assert_status (carom_world_detect (w), CAROM_OK);
+  n = carom_world_contact_count (w);
+  for (i = 0; i < n; ++i)
+    {
+      double depth;
+      carom_world_get_contact (w, i, NULL, NULL, NULL, NULL, NULL, NULL, &depth);
+      assert_true (depth <= 0.0);
+    }
+  carom_world_destroy (w);
+}
+
+int main (void)
+{
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test (test_settings_and_bodies),
+    cmocka_unit_test (test_bounds),
+    cmocka_unit_test (test_comments_blank_lines_crlf),
+    cmocka_unit_test (test_empty_and_comment_only),
+    cmocka_unit_test (test_settings_order),
+    cmocka_unit_test (test_def_defaults),
+    cmocka_unit_test (test_bad_lines),
+    cmocka_unit_test (test_messages),
+    cmocka_unit_test (test_nul_byte),
+    cmocka_unit_test (test_error_struct_optional),
+    cmocka_unit_test (test_null_arguments),
+    cmocka_unit_test (test_long_line),
+    cmocka_unit_test (test_allocator_and_out_of_memory),
+    cmocka_unit_test (test_locale_independent),
+    cmocka_unit_test (test_file_errors),
+    cmocka_unit_test (test_shipped_scenes),
+    cmocka_unit_test (test_gas_starts_apart),
+  };
+  return cmocka_run_group_tests (tests, NULL, NULL);
+}
