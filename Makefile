@@ -75,6 +75,7 @@ check: deps-check
 	@$(MAKE) --no-print-directory tests lib
 	@tools/run-tests "$(VALGRIND)" $(TEST_BIN)
 	@tools/check-readme $(BUILD)
+	@tools/check-exports $(BUILD)
 	@for part in $(CHECK_PARTS); do $(MAKE) --no-print-directory $$part || exit 1; done
 
 clean:

@@ -306,6 +306,46 @@ static void test_box_rests_on_floor (void **state)
   carom_world_destroy (w);
 }
 
+/* A box dropped into the notch of a static U shape lands inside the notch:
+ * the concave outline counts, not its convex hull (which would hold the box
+ * up at the top of the arms). */
+static void test_u_shape_catches_box_in_notch (void **state)
+{
+  const double u[] = {0, 0, 3, 0, 3, 3, 2, 3, 2, 1, 1, 1, 1, 3, 0, 3};
+  int mode;
+  (void) state;
+  for (mode = 0; mode < 2; ++mode)
+    {
+      carom_world *w = NULL;
+      carom_world_def def;
+      carom_body_def d;
+      carom_body_id u_id, box;
+      double ux, uy, x, y;
+      int step;
+      carom_world_def_init (&def);
+      def.gravity_y = -10;
+      def.friction = 0.3;
+      def.narrow_phase = mode ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
+      assert_status (carom_world_init (&w, &def), CAROM_OK);
+      carom_body_def_init (&d);
+      d.type = CAROM_STATIC;
+      assert_status (carom_world_add_polygon (w, &d, u, 8, &u_id), CAROM_OK);
+      carom_body_get_position (w, u_id, &ux, &uy); /* the U's centroid, (0, 0) */
+      carom_body_def_init (&d);
+      /* the notch spans x in [1, 2] and y in [1, 3] of the input frame,
+       * whose centroid is (1.5, 9.5 / 7) */
+      d.x = 0.0, d.y = 3.0;
+      assert_status (carom_world_add_box (w, &d, 0.6, 0.6, &box), CAROM_OK);
+      for (step = 0; step < 180; ++step)
+        assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+      carom_body_get_position (w, box, &x, &y);
+      /* resting on the notch floor: y = 1 + 0.3 in the input frame */
+      assert_near_abs (x, 0.0, 1e-6);
+      assert_near_abs (y, 1.3 - 9.5 / 7.0, 0.01);
+      carom_world_destroy (w);
+    }
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
@@ -319,6 +359,7 @@ int main (void)
     cmocka_unit_test (test_inelastic_relative_normal_velocity_is_zero),
     cmocka_unit_test (test_restitution_scales_separation_speed),
     cmocka_unit_test (test_box_rests_on_floor),
+    cmocka_unit_test (test_u_shape_catches_box_in_notch),
   };
   return cmocka_run_group_tests_name ("collision", tests, NULL, NULL);
 }
