@@ -1,0 +1,501 @@
+"""carom: 2D rigid-body physics, through the library's stable C ABI.
+
+    import carom
+
+    with carom.World(gravity=(0, -9.81)) as world:
+        ball = world.add_circle(0.5, y=10)
+        for _ in range(60):
+            world.step(1 / 60)
+        print(ball.position, ball.velocity)
+
+Every failure of the C library raises CaromError, whose `status` is a
+Status and whose message comes from carom_status_string. The shared
+library is found through CAROM_LIBRARY (a full path), else the system's
+library search (docs/bindings.md).
+"""
+
+import collections
+import ctypes
+import enum
+import os
+import weakref
+
+from . import _native
+from ._native import lib as _lib
+
+__all__ = [
+    "Body",
+    "CaromError",
+    "ClosedWorldError",
+    "Contact",
+    "NarrowPhase",
+    "Status",
+    "World",
+    "library_path",
+    "library_version",
+    "status_string",
+]
+
+__version__ = "0.1.0"
+
+#: (major, minor, patch) of the shared library loaded at run time.
+library_version = _native.version_tuple
+#: The file or name the shared library was loaded from.
+library_path = _native.path
+
+#: Largest vertex count of one polygon (CAROM_MAX_POLYGON_VERTICES).
+MAX_POLYGON_VERTICES = _native.MAX_POLYGON_VERTICES
+
+
+class Status(enum.IntEnum):
+    """carom_status: the result of every fallible call (values are fixed)."""
+
+    OK = 0
+    NULL_ARGUMENT = 1
+    NOT_FINITE = 2
+    BAD_SIZE = 3
+    BAD_DENSITY = 4
+    TOO_FEW_VERTICES = 5
+    TOO_MANY_VERTICES = 6
+    REPEATED_VERTEX = 7
+    SELF_INTERSECTING = 8
+    ZERO_AREA = 9
+    BAD_TIME_STEP = 10
+    STALE_BODY = 11
+    OUT_OF_MEMORY = 12
+    BAD_ARGUMENT = 13
+    BAD_STRUCT_SIZE = 14
+    TOO_MANY_BODIES = 15
+    STATIC_BODY = 16
+    SCENE_SYNTAX = 17
+    IO = 18
+
+
+class NarrowPhase(enum.IntEnum):
+    """carom_narrow_phase: the method for pairs of convex polygons."""
+
+    SAT = 0
+    VERTEX_EDGE = 1
+
+
+def _status(value):
+    """A Status for a known code, the plain int for one a newer library added."""
+    try:
+        return Status(value)
+    except ValueError:
+        return int(value)
+
+
+def status_string(status):
+    """carom_status_string: a short English sentence for a status."""
+    return _lib.carom_status_string(int(status)).decode("utf-8", "replace")
+
+
+class CaromError(Exception):
+    """A call into carom failed.
+
+    status  -- the Status (an int if this binding does not know the code)
+    message -- what went wrong, from carom_status_string or the scene loader
+    line    -- for scenes: the 1-based line of the error, else None
+    """
+
+    def __init__(self, status, message=None, line=None):
+        self.status = _status(status)
+        self.message = message if message is not None else status_string(status)
+        self.line = line
+        super().__init__(self.status, self.message)
+
+    def __str__(self):
+        name = self.status.name if isinstance(self.status, Status) else str(self.status)
+        return "%s [%s]" % (self.message, name)
+
+
+class ClosedWorldError(CaromError):
+    """The world was closed: neither it nor its bodies can be used any more."""
+
+
+def _check(status, what):
+    if status != 0:
+        raise CaromError(status, "%s: %s" % (what, status_string(status)))
+
+
+def _finite(value, what):
+    # Plain numbers go to C as doubles; anything else is a caller's error
+    # better reported here than as a ctypes ArgumentError.
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise TypeError("%s must be a number, got %r" % (what, value)) from None
+
+
+def _pair(value, what):
+    try:
+        x, y = value
+    except (TypeError, ValueError):
+        raise TypeError("%s must be an (x, y) pair, got %r" % (what, value)) from None
+    return _finite(x, what), _finite(y, what)
+
+
+def _world_def(gravity=(0.0, 0.0), restitution=0.0, friction=0.0, substeps=1,
+               iterations=8, position_correction=0.2, slop=0.01,
+               narrow_phase=NarrowPhase.SAT):
+    d = _native.new_def(_native.WorldDef)
+    d.gravity_x, d.gravity_y = _pair(gravity, "gravity")
+    d.restitution = _finite(restitution, "restitution")
+    d.friction = _finite(friction, "friction")
+    d.substeps = int(substeps)
+    d.iterations = int(iterations)
+    d.position_correction = _finite(position_correction, "position_correction")
+    d.slop = _finite(slop, "slop")
+    if isinstance(narrow_phase, str):
+        try:
+            narrow_phase = NarrowPhase[narrow_phase.upper().replace("-", "_")]
+        except KeyError:
+            raise ValueError("narrow_phase must be 'sat' or 'vertex_edge', got %r"
+                             % narrow_phase) from None
+    d.narrow_phase = int(narrow_phase)
+    return d
+
+
+Contact = collections.namedtuple("Contact", "a b point normal depth")
+Contact.__doc__ = """A contact point: bodies a and b, the point (x, y), the unit
+normal (nx, ny) from a to b, and the penetration depth (negative when the
+bodies are apart but within the contact margin)."""
+
+
+class World:
+    """A simulation world (carom_world).
+
+    World(gravity=(0, 0), restitution=0, friction=0, substeps=1, iterations=8,
+          position_correction=0.2, slop=0.01, narrow_phase="sat")
+
+    Use it as a context manager, or call close(); a world that is garbage
+    collected is closed too. Bodies keep their world alive.
+    """
+
+    def __init__(self, gravity=(0.0, 0.0), **settings):
+        d = _world_def(gravity, **settings)
+        ptr = ctypes.c_void_p()
+        _check(_lib.carom_world_init(ctypes.byref(ptr), ctypes.byref(d)), "World")
+        self._adopt(ptr)
+
+    def _adopt(self, ptr):
+        self._ptr = ptr
+        self._finalizer = weakref.finalize(self, _lib.carom_world_destroy, ptr)
+
+    @classmethod
+    def _loaded(cls, loader, source, settings):
+        d = _world_def(**settings) if settings else None
+        err = _native.SceneError()
+        err.size = ctypes.sizeof(err)
+        ptr = ctypes.c_void_p()
+        status = loader(ctypes.byref(ptr), source, None if d is None else ctypes.byref(d),
+                        ctypes.byref(err))
+        if status != 0:
+            message = err.message.decode("utf-8", "replace") or status_string(status)
+            raise CaromError(status, message, err.line or None)
+        world = cls.__new__(cls)
+        world._adopt(ptr)
+        return world
+
+    @classmethod
+    def from_scene_text(cls, text, **settings):
+        """Build a world from scene text (docs/scenes.md). Settings given here
+        apply where the scene does not set them. A bad scene raises CaromError
+        with `line` set."""
+        data = text.encode("utf-8") if isinstance(text, str) else bytes(text)
+        return cls._loaded(lambda w, src, d, e: _lib.carom_scene_load_text(w, src, len(src), d, e),
+                           data, settings)
+
+    @classmethod
+    def from_scene(cls, path, **settings):
+        """Build a world from a scene file; Status.IO if it cannot be read."""
+        return cls._loaded(_lib.carom_scene_load_file, os.fsencode(path), settings)
+
+    # ------------------------------------------------------------ lifecycle
+    def close(self):
+        """Destroy the world and its bodies. Safe to call twice."""
+        if self._ptr is not None:
+            self._finalizer()
+            self._ptr = None
+
+    @property
+    def closed(self):
+        return self._ptr is None
+
+    def __enter__(self):
+        self._handle()
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    def __repr__(self):
+        if self._ptr is None:
+            return "<carom.World closed>"
+        return "<carom.World with %d bodies>" % len(self)
+
+    def _handle(self, for_body=False):
+        if self._ptr is None:
+            if for_body:
+                raise ClosedWorldError(Status.STALE_BODY, "the body's world was closed")
+            raise ClosedWorldError(Status.NULL_ARGUMENT, "the world was closed")
+        return self._ptr
+
+    # ----------------------------------------------------------- simulation
+    def step(self, dt):
+        """Advance the world by dt (> 0, finite)."""
+        _check(_lib.carom_world_update(self._handle(), _finite(dt, "dt")), "step")
+
+    @property
+    def gravity(self):
+        gx, gy = ctypes.c_double(), ctypes.c_double()
+        _check(_lib.carom_world_get_gravity(self._handle(), ctypes.byref(gx), ctypes.byref(gy)),
+               "gravity")
+        return (gx.value, gy.value)
+
+    @gravity.setter
+    def gravity(self, value):
+        gx, gy = _pair(value, "gravity")
+        _check(_lib.carom_world_set_gravity(self._handle(), gx, gy), "gravity")
+
+    def __len__(self):
+        return _lib.carom_world_body_count(self._handle())
+
+    @property
+    def bodies(self):
+        """The live bodies, in creation order."""
+        h = self._handle()
+        n = _lib.carom_world_get_bodies(h, None, 0)
+        ids = (_native.c_body_id * max(n, 1))()
+        n = min(n, _lib.carom_world_get_bodies(h, ids, n))
+        return [Body(self, ids[i]) for i in range(n)]
+
+    def detect(self):
+        """Run collision detection alone on the current positions and return
+        the contacts."""
+        _check(_lib.carom_world_detect(self._handle()), "detect")
+        return self.contacts()
+
+    def contacts(self):
+        """The contact points found by the last step (or detect)."""
+        h = self._handle()
+        a, b = _native.c_body_id(), _native.c_body_id()
+        px, py, nx, ny, depth = (ctypes.c_double() for _ in range(5))
+        out = []
+        for i in range(_lib.carom_world_contact_count(h)):
+            _check(_lib.carom_world_get_contact(
+                h, i, ctypes.byref(a), ctypes.byref(b), ctypes.byref(px), ctypes.byref(py),
+                ctypes.byref(nx), ctypes.byref(ny), ctypes.byref(depth)), "contacts")
+            out.append(Contact(Body(self, a.value), Body(self, b.value), (px.value, py.value),
+                               (nx.value, ny.value), depth.value))
+        return out
+
+    # --------------------------------------------------------------- bodies
+    def _body_def(self, x=0.0, y=0.0, angle=0.0, vx=0.0, vy=0.0, spin=0.0, density=1.0,
+                  restitution=None, friction=None, static=False):
+        d = _native.new_def(_native.BodyDef)
+        d.type = _native.STATIC if static else _native.DYNAMIC
+        d.x, d.y = _finite(x, "x"), _finite(y, "y")
+        d.angle = _finite(angle, "angle")
+        d.vx, d.vy = _finite(vx, "vx"), _finite(vy, "vy")
+        d.spin = _finite(spin, "spin")
+        d.density = _finite(density, "density")
+        # None (and the C convention, a negative value) mean the world's default.
+        d.restitution = -1.0 if restitution is None else _finite(restitution, "restitution")
+        d.friction = -1.0 if friction is None else _finite(friction, "friction")
+        return d
+
+    def _add(self, what, call, options):
+        h = self._handle()
+        d = self._body_def(**options)
+        new = _native.c_body_id()
+        _check(call(h, ctypes.byref(d), ctypes.byref(new)), what)
+        return Body(self, new.value)
+
+    def add_circle(self, radius, **options):
+        """A circle of the given radius centred on (x, y). Options: x, y,
+        angle, vx, vy, spin, density, restitution, friction, static."""
+        r = _finite(radius, "radius")
+        return self._add("add_circle",
+                         lambda h, d, i: _lib.carom_world_add_circle(h, d, r, i), options)
+
+    def add_box(self, width, height, **options):
+        """A width x height box centred on (x, y); options as add_circle."""
+        w, hh = _finite(width, "width"), _finite(height, "height")
+        return self._add("add_box",
+                         lambda h, d, i: _lib.carom_world_add_box(h, d, w, hh, i), options)
+
+    def add_regular(self, n, side, **options):
+        """A regular polygon of n sides of length `side`, one vertex on the +x
+        axis before rotation; options as add_circle."""
+        if isinstance(n, float) and n.is_integer():
+            n = int(n)
+        if not isinstance(n, int):
+            raise TypeError("n must be an int, got %r" % (n,))
+        count = max(min(n, 2**31 - 1), -2**31)
+        s = _finite(side, "side")
+        return self._add("add_regular",
+                         lambda h, d, i: _lib.carom_world_add_regular(h, d, count, s, i), options)
+
+    def add_polygon(self, points, **options):
+        """A simple polygon (convex or concave, either winding) from (x, y)
+        points; its centroid is placed at (x, y). Options as add_circle."""
+        pts = [_pair(p, "a polygon vertex") for p in points]
+        xy = (ctypes.c_double * max(2 * len(pts), 1))()
+        for k, (px, py) in enumerate(pts):
+            xy[2 * k], xy[2 * k + 1] = px, py
+        count = min(len(pts), 2**31 - 1)
+        return self._add("add_polygon",
+                         lambda h, d, i: _lib.carom_world_add_polygon(h, d, xy, count, i), options)
+
+
+class Body:
+    """A handle to one body of a World: its id and its world. The handle of
+    a removed body raises CaromError(Status.STALE_BODY); one whose world was
+    closed raises ClosedWorldError."""
+
+    __slots__ = ("_world", "_id", "__weakref__")
+
+    def __init__(self, world, body_id):
+        self._world = world
+        self._id = int(body_id)
+
+    @property
+    def id(self):
+        """The carom_body_id (a non-zero 64-bit integer)."""
+        return self._id
+
+    @property
+    def world(self):
+        return self._world
+
+    def __eq__(self, other):
+        return isinstance(other, Body) and other._world is self._world and other._id == self._id
+
+    def __hash__(self):
+        return hash((id(self._world), self._id))
+
+    def __repr__(self):
+        if not self.is_alive:
+            return "<carom.Body %#x (gone)>" % self._id
+        return "<carom.Body %#x %s at (%g, %g)>" % ((self._id, self.shape) + self.position)
+
+    def _h(self):
+        return self._world._handle(for_body=True)
+
+    def _get(self, fn, what, n):
+        out = [ctypes.c_double() for _ in range(n)]
+        _check(fn(self._h(), self._id, *(ctypes.byref(v) for v in out)), what)
+        return tuple(v.value for v in out)
+
+    @property
+    def is_alive(self):
+        """True while the body exists (False once removed or its world closed)."""
+        h = self._world._ptr
+        return h is not None and _lib.carom_body_check(h, self._id) == 0
+
+    def remove(self):
+        """Remove the body from its world; the handle becomes stale."""
+        _check(_lib.carom_world_remove_body(self._h(), self._id), "remove")
+
+    @property
+    def position(self):
+        """Centre of mass (x, y)."""
+        return self._get(_lib.carom_body_get_position, "position", 2)
+
+    @position.setter
+    def position(self, value):
+        x, y = _pair(value, "position")
+        _check(_lib.carom_body_set_position(self._h(), self._id, x, y), "position")
+
+    @property
+    def angle(self):
+        """Rotation in radians, counter-clockwise."""
+        return self._get(_lib.carom_body_get_angle, "angle", 1)[0]
+
+    @angle.setter
+    def angle(self, value):
+        _check(_lib.carom_body_set_angle(self._h(), self._id, _finite(value, "angle")), "angle")
+
+    @property
+    def velocity(self):
+        """Linear velocity (vx, vy)."""
+        return self._get(_lib.carom_body_get_velocity, "velocity", 2)
+
+    @velocity.setter
+    def velocity(self, value):
+        vx, vy = _pair(value, "velocity")
+        _check(_lib.carom_body_set_velocity(self._h(), self._id, vx, vy), "velocity")
+
+    @property
+    def spin(self):
+        """Angular velocity, radians per time unit."""
+        return self._get(_lib.carom_body_get_spin, "spin", 1)[0]
+
+    @spin.setter
+    def spin(self, value):
+        _check(_lib.carom_body_set_spin(self._h(), self._id, _finite(value, "spin")), "spin")
+
+    @property
+    def mass(self):
+        """Mass (0 for a static body)."""
+        return self._get(_lib.carom_body_get_mass, "mass", 3)[0]
+
+    @property
+    def inertia(self):
+        """Moment of inertia about the centre of mass (0 for a static body)."""
+        return self._get(_lib.carom_body_get_mass, "inertia", 3)[1]
+
+    @property
+    def area(self):
+        return self._get(_lib.carom_body_get_mass, "area", 3)[2]
+
+    @property
+    def is_static(self):
+        kind = ctypes.c_int()
+        _check(_lib.carom_body_get_type(self._h(), self._id, ctypes.byref(kind)), "is_static")
+        return kind.value == _native.STATIC
+
+    @property
+    def shape(self):
+        """'circle' or 'polygon' (boxes and regular polygons are polygons)."""
+        kind, radius = ctypes.c_int(), ctypes.c_double()
+        _check(_lib.carom_body_get_shape(self._h(), self._id, ctypes.byref(kind),
+                                         ctypes.byref(radius)), "shape")
+        return "circle" if kind.value == _native.SHAPE_CIRCLE else "polygon"
+
+    @property
+    def radius(self):
+        """A circle's radius (None for a polygon)."""
+        kind, radius = ctypes.c_int(), ctypes.c_double()
+        _check(_lib.carom_body_get_shape(self._h(), self._id, ctypes.byref(kind),
+                                         ctypes.byref(radius)), "radius")
+        return radius.value if kind.value == _native.SHAPE_CIRCLE else None
+
+    @property
+    def restitution(self):
+        """The restitution in effect (after the world's default)."""
+        return self._get(_lib.carom_body_get_material, "restitution", 2)[0]
+
+    @property
+    def friction(self):
+        """The friction coefficient in effect (after the world's default)."""
+        return self._get(_lib.carom_body_get_material, "friction", 2)[1]
+
+    @property
+    def vertices(self):
+        """A polygon's vertices in world coordinates, counter-clockwise, as
+        (x, y) tuples; [] for a circle."""
+        h = self._h()
+        count = ctypes.c_int32()
+        _check(_lib.carom_body_get_vertices(h, self._id, None, 0, ctypes.byref(count)), "vertices")
+        n = count.value
+        if n == 0:
+            return []
+        xy = (ctypes.c_double * (2 * n))()
+        _check(_lib.carom_body_get_vertices(h, self._id, xy, n, ctypes.byref(count)), "vertices")
+        return [(xy[2 * k], xy[2 * k + 1]) for k in range(min(n, count.value))]
+
+

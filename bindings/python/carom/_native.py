@@ -1,0 +1,257 @@
+"""The raw C ABI of libcarom through ctypes: finding the library, the
+structs that cross it, and an explicit prototype for every function.
+
+Only the layer in carom/__init__.py should use this module directly.
+"""
+
+import ctypes
+import ctypes.util
+import os
+import sys
+
+#: The major version this binding is written for. The shared library's
+#: soname carries the same number (libcarom.so.0); a library of another major
+#: version is refused.
+EXPECTED_MAJOR = 0
+
+#: Environment variable naming the shared library to load (a full path).
+LIBRARY_ENV = "CAROM_LIBRARY"
+
+
+# ------------------------------------------------------------------ types
+
+c_status = ctypes.c_int  # carom_status: an int-sized C enum
+c_body_id = ctypes.c_uint64  # carom_body_id
+c_world_p = ctypes.c_void_p  # carom_world * (opaque)
+c_double_p = ctypes.POINTER(ctypes.c_double)
+c_int32_p = ctypes.POINTER(ctypes.c_int32)
+c_body_id_p = ctypes.POINTER(c_body_id)
+
+ALLOC_FN = ctypes.CFUNCTYPE(ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p)
+FREE_FN = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p)
+
+
+class Allocator(ctypes.Structure):
+    """carom_allocator: {alloc, free, user}; all NULL means malloc/free."""
+
+    _fields_ = [
+        ("alloc", ALLOC_FN),
+        ("free", FREE_FN),
+        ("user", ctypes.c_void_p),
+    ]
+
+
+class WorldDef(ctypes.Structure):
+    """carom_world_def, version 0.1 layout (fields only ever appended)."""
+
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("gravity_x", ctypes.c_double),
+        ("gravity_y", ctypes.c_double),
+        ("restitution", ctypes.c_double),
+        ("friction", ctypes.c_double),
+        ("substeps", ctypes.c_int32),
+        ("iterations", ctypes.c_int32),
+        ("position_correction", ctypes.c_double),
+        ("slop", ctypes.c_double),
+        ("narrow_phase", ctypes.c_int),
+        ("allocator", Allocator),
+    ]
+
+
+class BodyDef(ctypes.Structure):
+    """carom_body_def, version 0.1 layout (fields only ever appended)."""
+
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("type", ctypes.c_int),
+        ("x", ctypes.c_double),
+        ("y", ctypes.c_double),
+        ("angle", ctypes.c_double),
+        ("vx", ctypes.c_double),
+        ("vy", ctypes.c_double),
+        ("spin", ctypes.c_double),
+        ("density", ctypes.c_double),
+        ("restitution", ctypes.c_double),
+        ("friction", ctypes.c_double),
+    ]
+
+
+class SceneError(ctypes.Structure):
+    """carom_scene_error: the caller sets `size`, the library fills the rest."""
+
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("line", ctypes.c_int32),
+        ("cause", ctypes.c_int),
+        ("message", ctypes.c_char * 256),
+    ]
+
+
+# Constants of include/carom.h (enum values are fixed by the ABI).
+DYNAMIC, STATIC = 0, 1
+SHAPE_CIRCLE, SHAPE_POLYGON = 0, 1
+NARROW_SAT, NARROW_VERTEX_EDGE = 0, 1
+MAX_POLYGON_VERTICES = 1024
+
+
+# -------------------------------------------------------------- prototypes
+
+_W = c_world_p
+_D = ctypes.c_double
+_ID = c_body_id
+
+# name: (restype, argtypes). Every function of include/carom.h is here.
+PROTOTYPES = {
+    "carom_version": (ctypes.c_uint32, []),
+    "carom_status_string": (ctypes.c_char_p, [c_status]),
+    "carom_world_def_init": (None, [ctypes.c_void_p]),
+    "carom_world_init": (c_status, [ctypes.POINTER(c_world_p), ctypes.POINTER(WorldDef)]),
+    "carom_world_destroy": (None, [_W]),
+    "carom_world_update": (c_status, [_W, _D]),
+    "carom_world_set_gravity": (c_status, [_W, _D, _D]),
+    "carom_world_get_gravity": (c_status, [_W, c_double_p, c_double_p]),
+    "carom_world_body_count": (ctypes.c_int32, [_W]),
+    "carom_world_get_bodies": (ctypes.c_int32, [_W, c_body_id_p, ctypes.c_int32]),
+    "carom_world_detect": (c_status, [_W]),
+    "carom_world_contact_count": (ctypes.c_int32, [_W]),
+    "carom_world_get_contact": (
+        c_status,
+        [_W, ctypes.c_int32, c_body_id_p, c_body_id_p,
+         c_double_p, c_double_p, c_double_p, c_double_p, c_double_p],
+    ),
+    "carom_body_def_init": (None, [ctypes.c_void_p]),
+    "carom_world_add_circle": (c_status, [_W, ctypes.POINTER(BodyDef), _D, c_body_id_p]),
+    "carom_world_add_box": (c_status, [_W, ctypes.POINTER(BodyDef), _D, _D, c_body_id_p]),
+    "carom_world_add_regular": (
+        c_status, [_W, ctypes.POINTER(BodyDef), ctypes.c_int32, _D, c_body_id_p]),
+    "carom_world_add_polygon": (
+        c_status, [_W, ctypes.POINTER(BodyDef), c_double_p, ctypes.c_int32, c_body_id_p]),
+    "carom_world_remove_body": (c_status, [_W, _ID]),
+    "carom_body_check": (c_status, [_W, _ID]),
+    "carom_body_get_position": (c_status, [_W, _ID, c_double_p, c_double_p]),
+    "carom_body_set_position": (c_status, [_W, _ID, _D, _D]),
+    "carom_body_get_angle": (c_status, [_W, _ID, c_double_p]),
+    "carom_body_set_angle": (c_status, [_W, _ID, _D]),
+    "carom_body_get_velocity": (c_status, [_W, _ID, c_double_p, c_double_p]),
+    "carom_body_set_velocity": (c_status, [_W, _ID, _D, _D]),
+    "carom_body_get_spin": (c_status, [_W, _ID, c_double_p]),
+    "carom_body_set_spin": (c_status, [_W, _ID, _D]),
+    "carom_body_get_mass": (c_status, [_W, _ID, c_double_p, c_double_p, c_double_p]),
+    "carom_body_get_type": (c_status, [_W, _ID, ctypes.POINTER(ctypes.c_int)]),
+    "carom_body_get_shape": (c_status, [_W, _ID, ctypes.POINTER(ctypes.c_int), c_double_p]),
+    "carom_body_get_material": (c_status, [_W, _ID, c_double_p, c_double_p]),
+    "carom_body_get_vertices": (
+        c_status, [_W, _ID, c_double_p, ctypes.c_int32, c_int32_p]),
+    "carom_scene_load_text": (
+        c_status,
+        [ctypes.POINTER(c_world_p), ctypes.c_char_p, ctypes.c_size_t,
+         ctypes.POINTER(WorldDef), ctypes.POINTER(SceneError)],
+    ),
+    "carom_scene_load_file": (
+        c_status,
+        [ctypes.POINTER(c_world_p), ctypes.c_char_p,
+         ctypes.POINTER(WorldDef), ctypes.POINTER(SceneError)],
+    ),
+}
+
+
+# ------------------------------------------------------------------ loading
+
+def _candidates():
+    """Where to look for the library, in order (see docs/bindings.md)."""
+    path = os.environ.get(LIBRARY_ENV)
+    if path:
+        # An explicit choice: no silent fallback to another copy.
+        return [path], True
+    names = []
+    if sys.platform == "darwin":
+        soname, plain = "libcarom.%d.dylib" % EXPECTED_MAJOR, "libcarom.dylib"
+    elif sys.platform.startswith("win"):
+        soname, plain = "carom.dll", "carom.dll"
+    else:
+        soname, plain = "libcarom.so.%d" % EXPECTED_MAJOR, "libcarom.so"
+    # The soname first: the dynamic loader's own search (LD_LIBRARY_PATH,
+    # the ld.so cache) finds a library of the right major version.
+    names.append(soname)
+    found = ctypes.util.find_library("carom")
+    if found:
+        names.append(found)
+    for prefix in ("/usr/local/lib", "/usr/lib", "/opt/homebrew/lib",
+                   "/usr/lib/x86_64-linux-gnu", "/usr/lib/aarch64-linux-gnu",
+                   "/usr/local/lib64", "/usr/lib64"):
+        names.append(os.path.join(prefix, soname))
+        names.append(os.path.join(prefix, plain))
+    return names, False
+
+
+def _load():
+    names, explicit = _candidates()
+    errors = []
+    for name in names:
+        try:
+            return ctypes.CDLL(name), name
+        except OSError as exc:
+            errors.append(str(exc))
+    if explicit:
+        raise ImportError("carom: cannot load %s=%s (%s)" % (LIBRARY_ENV, names[0], errors[0]))
+    raise ImportError(
+        "carom: cannot find the carom shared library (libcarom.so.%d). Install it "
+        "(make install), or set %s to its full path, e.g. "
+        "%s=/path/to/build/libcarom.so.%d" % (EXPECTED_MAJOR, LIBRARY_ENV, LIBRARY_ENV, EXPECTED_MAJOR))
+
+
+def _declare(lib):
+    missing = []
+    for name, (restype, argtypes) in PROTOTYPES.items():
+        try:
+            fn = getattr(lib, name)
+        except AttributeError:
+            missing.append(name)
+            continue
+        fn.restype = restype
+        fn.argtypes = argtypes
+    if "carom_version" in missing:
+        raise ImportError("carom: %s is not the carom library (no carom_version)" % lib._name)
+    if missing:
+        raise ImportError("carom: %s lacks %s (a library older than this binding?)"
+                          % (lib._name, ", ".join(missing)))
+
+
+def _struct_size(init):
+    """The size a *_def_init of this library writes: it fills its own
+    sizeof, which a newer library may make larger than our struct, so it
+    writes into a spare buffer, never into ours."""
+    spare = ctypes.create_string_buffer(4096)
+    init(spare)
+    return ctypes.c_uint32.from_buffer(spare).value, spare
+
+
+lib, path = _load()
+_declare(lib)
+
+version = lib.carom_version()
+version_tuple = (version // 10000, version // 100 % 100, version % 100)
+if version_tuple[0] != EXPECTED_MAJOR:
+    raise ImportError(
+        "carom: %s is version %d.%d.%d; this binding needs major version %d"
+        % ((path,) + version_tuple + (EXPECTED_MAJOR,)))
+
+for _init, _cls in ((lib.carom_world_def_init, WorldDef), (lib.carom_body_def_init, BodyDef)):
+    _size, _ = _struct_size(_init)
+    if _size < ctypes.sizeof(_cls):
+        raise ImportError(
+            "carom: %s has a %d-byte %s, smaller than the %d bytes this binding "
+            "knows: the library is older than the binding"
+            % (path, _size, _cls.__name__, ctypes.sizeof(_cls)))
+
+
+def new_def(cls):
+    """A def filled with the library's defaults, its size set to ours (the
+    ABI rule: the caller states the size of the struct it passes)."""
+    init = lib.carom_world_def_init if cls is WorldDef else lib.carom_body_def_init
+    _, spare = _struct_size(init)
+    d = cls()
+    ctypes.memmove(ctypes.addressof(d), spare, ctypes.sizeof(cls))
+    d.size = ctypes.sizeof(cls)
+    return d

@@ -1,0 +1,331 @@
+"""Tests of the Python binding on the real shared library (CAROM_LIBRARY).
+
+Run from the repository: make check-python (or CAROM_LIBRARY=build/libcarom.so.0
+python3 -m pytest bindings/python/tests).
+"""
+
+import ctypes
+import math
+import os
+import re
+
+import pytest
+
+import carom
+from carom import _native
+
+HEADER = os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                      os.pardir, os.pardir, os.pardir, "include", "carom.h")
+
+SCENE = """\
+gravity 0 -10
+box 1 1 at 0 2
+bounds -5 0 5 10
+"""
+
+
+# ------------------------------------------------------------- the binding
+
+def test_library_major_version_matches():
+    assert carom.library_version[0] == _native.EXPECTED_MAJOR
+    assert _native.lib.carom_version() == (
+        carom.library_version[0] * 10000 + carom.library_version[1] * 100
+        + carom.library_version[2])
+
+
+@pytest.mark.parametrize("init, cls", [
+    (_native.lib.carom_world_def_init, _native.WorldDef),
+    (_native.lib.carom_body_def_init, _native.BodyDef),
+])
+def test_struct_layouts_match_the_library(init, cls):
+    # def_init writes its own sizeof into `size`: the ctypes layout must have
+    # the same size (the C header and this binding describe the same struct).
+    size, _ = _native._struct_size(init)
+    assert size == ctypes.sizeof(cls)
+
+
+def test_struct_defaults_come_from_the_library():
+    d = _native.new_def(_native.WorldDef)
+    assert (d.substeps, d.iterations, d.position_correction, d.slop) == (1, 8, 0.2, 0.01)
+    b = _native.new_def(_native.BodyDef)
+    assert (b.type, b.density, b.restitution, b.friction) == (0, 1.0, -1.0, -1.0)
+
+
+@pytest.mark.skipif(not os.path.exists(HEADER), reason="no include/carom.h beside the binding")
+def test_every_header_function_has_a_prototype():
+    with open(HEADER) as f:
+        declared = set(re.findall(r"^CAROM_API[^(]*?\b(carom_\w+)\s*\(", f.read(), re.M))
+    assert declared, "no CAROM_API declarations found"
+    assert declared == set(_native.PROTOTYPES)
+
+
+def test_status_strings_come_from_the_library():
+    assert carom.status_string(carom.Status.OK) == "ok"
+    for status in carom.Status:
+        assert carom.status_string(status)
+    err = carom.CaromError(carom.Status.BAD_TIME_STEP)
+    assert err.message == carom.status_string(carom.Status.BAD_TIME_STEP)
+    assert "BAD_TIME_STEP" in str(err)
+    assert carom.CaromError(99).status == 99  # a code from a newer library
+
+
+# ------------------------------------------------------------------ worlds
+
+def test_world_is_a_context_manager_and_closes_once():
+    with carom.World() as world:
+        world.add_circle(1.0)
+        assert len(world) == 1
+    assert world.closed
+    world.close()  # again: harmless
+    with pytest.raises(carom.ClosedWorldError):
+        world.step(0.1)
+    with pytest.raises(carom.ClosedWorldError):
+        len(world)
+
+
+def test_gravity_property():
+    with carom.World(gravity=(1.0, -9.81)) as world:
+        assert world.gravity == (1.0, -9.81)
+        world.gravity = (0.0, -3.0)
+        assert world.gravity == (0.0, -3.0)
+        with pytest.raises(carom.CaromError) as e:
+            world.gravity = (math.inf, 0.0)
+        assert e.value.status == carom.Status.NOT_FINITE
+        assert world.gravity == (0.0, -3.0)
+
+
+def test_bad_world_settings():
+    with pytest.raises(carom.CaromError) as e:
+        carom.World(restitution=2.0)
+    assert e.value.status == carom.Status.BAD_ARGUMENT
+    with pytest.raises(carom.CaromError) as e:
+        carom.World(substeps=0)
+    assert e.value.status == carom.Status.BAD_ARGUMENT
+    with carom.World(narrow_phase="vertex_edge", substeps=4) as world:
+        world.step(0.01)
+
+
+def test_free_fall_closed_form():
+    # Half kick, drift, half kick integrates constant gravity exactly:
+    # y(t) = y0 + vy0 t - g t^2 / 2, x(t) = x0 + vx0 t.
+    g, dt, n = 9.81, 1.0 / 60.0, 120
+    x0, y0, vx0, vy0 = 1.0, 100.0, 2.0, 5.0
+    with carom.World(gravity=(0.0, -g)) as world:
+        box = world.add_box(1.0, 2.0, x=x0, y=y0, vx=vx0, vy=vy0, spin=0.5)
+        ball = world.add_circle(0.5, x=-50.0, y=y0)
+        for _ in range(n):
+            world.step(dt)
+        t = n * dt
+        x, y = box.position
+        assert x == pytest.approx(x0 + vx0 * t, abs=1e-9)
+        assert y == pytest.approx(y0 + vy0 * t - 0.5 * g * t * t, abs=1e-9)
+        assert box.velocity == pytest.approx((vx0, vy0 - g * t), abs=1e-9)
+        assert box.angle == pytest.approx(0.5 * t, abs=1e-12)
+        assert box.spin == 0.5
+        assert ball.position[1] == pytest.approx(y0 - 0.5 * g * t * t, abs=1e-9)
+
+
+def test_elastic_collision_conserves_momentum_and_energy():
+    # Two circles head on, e = 1, no gravity, no friction.
+    with carom.World(restitution=1.0) as world:
+        a = world.add_circle(0.5, x=-2.0, vx=3.0, density=1.0)
+        b = world.add_circle(0.8, x=2.0, vx=-1.0, density=2.0)
+        bodies = (a, b)
+
+        def momentum():
+            return tuple(sum(body.mass * body.velocity[k] for body in bodies) for k in (0, 1))
+
+        def energy():
+            return sum(0.5 * body.mass * (body.velocity[0] ** 2 + body.velocity[1] ** 2)
+                       + 0.5 * body.inertia * body.spin ** 2 for body in bodies)
+
+        p0, e0 = momentum(), energy()
+        touched = False
+        for _ in range(300):
+            world.step(0.01)
+            touched = touched or bool(world.contacts())
+        assert touched, "the bodies never met"
+        assert a.velocity[0] < 0 < b.velocity[0], "they did not bounce"
+        p1, e1 = momentum(), energy()
+        assert abs(p1[0] - p0[0]) <= 1e-12 * max(1.0, abs(p0[0]))
+        assert abs(p1[1] - p0[1]) <= 1e-12
+        assert abs(e1 - e0) <= 1e-9 * e0
+        # and the outcome is the closed form of a 1D elastic collision
+        m1, m2, u1, u2 = a.mass, b.mass, 3.0, -1.0
+        v1 = ((m1 - m2) * u1 + 2 * m2 * u2) / (m1 + m2)
+        v2 = ((m2 - m1) * u2 + 2 * m1 * u1) / (m1 + m2)
+        assert a.velocity[0] == pytest.approx(v1, abs=1e-9)
+        assert b.velocity[0] == pytest.approx(v2, abs=1e-9)
+
+
+def test_contacts_and_detect():
+    with carom.World() as world:
+        floor = world.add_box(10.0, 1.0, y=-0.5, static=True)
+        box = world.add_box(1.0, 1.0, y=0.49)
+        contacts = world.detect()
+        assert contacts
+        for c in contacts:
+            assert {c.a, c.b} == {floor, box}
+            assert math.hypot(*c.normal) == pytest.approx(1.0)
+            assert c.depth == pytest.approx(0.01, abs=1e-9)
+            assert isinstance(c, carom.Contact)
+
+
+# ------------------------------------------------------------------ bodies
+
+def test_body_properties():
+    with carom.World(restitution=0.25, friction=0.5) as world:
+        box = world.add_box(2.0, 3.0, x=1.0, y=2.0, density=2.0, restitution=0.75)
+        m = 2.0 * 6.0
+        assert box.mass == pytest.approx(m)
+        assert box.inertia == pytest.approx(m * (4.0 + 9.0) / 12.0)
+        assert box.area == pytest.approx(6.0)
+        assert box.shape == "polygon" and box.radius is None
+        assert not box.is_static
+        assert (box.restitution, box.friction) == (0.75, 0.5)
+        assert sorted(box.vertices) == sorted([(0.0, 0.5), (2.0, 0.5), (2.0, 3.5), (0.0, 3.5)])
+
+        box.position = (5.0, 6.0)
+        box.angle = math.pi / 2
+        box.velocity = (1.0, -1.0)
+        box.spin = 2.0
+        assert box.position == (5.0, 6.0)
+        assert box.angle == math.pi / 2
+        assert box.velocity == (1.0, -1.0)
+        assert box.spin == 2.0
+        xs = sorted(round(v[0], 12) for v in box.vertices)
+        assert xs == [3.5, 3.5, 6.5, 6.5]  # rotated a quarter turn
+
+        ball = world.add_circle(0.5, static=True)
+        assert ball.is_static and ball.mass == 0.0 and ball.inertia == 0.0
+        assert ball.shape == "circle" and ball.radius == 0.5 and ball.vertices == []
+        assert ball.area == pytest.approx(math.pi * 0.25)
+        with pytest.raises(carom.CaromError) as e:
+            ball.velocity = (1.0, 0.0)
+        assert e.value.status == carom.Status.STATIC_BODY
+
+        hexagon = world.add_regular(6, 1.0)
+        assert len(hexagon.vertices) == 6
+        assert hexagon.area == pytest.approx(3 * math.sqrt(3) / 2)
+        concave = world.add_polygon([(0, 0), (2, 0), (2, 2), (1, 1), (0, 2)], x=10.0, y=10.0)
+        assert concave.area == pytest.approx(3.0)
+        assert concave.position == (10.0, 10.0)
+
+        assert world.bodies == [box, ball, hexagon, concave]
+        assert len({box, ball, hexagon, concave}) == 4
+
+
+@pytest.mark.parametrize("make, status", [
+    (lambda w: w.add_circle(float("nan")), carom.Status.NOT_FINITE),
+    (lambda w: w.add_circle(-1.0), carom.Status.BAD_SIZE),
+    (lambda w: w.add_box(1.0, 0.0), carom.Status.BAD_SIZE),
+    (lambda w: w.add_box(1.0, 1.0, density=0.0), carom.Status.BAD_DENSITY),
+    (lambda w: w.add_box(1.0, 1.0, x=math.inf), carom.Status.NOT_FINITE),
+    (lambda w: w.add_polygon([(0, 0), (1, 0)]), carom.Status.TOO_FEW_VERTICES),
+    (lambda w: w.add_polygon([]), carom.Status.TOO_FEW_VERTICES),
+    (lambda w: w.add_polygon([(0, 0), (1, 1), (1, 0), (0, 1)]), carom.Status.SELF_INTERSECTING),
+    (lambda w: w.add_polygon([(0, 0), (1, 0), (2, 0)]), carom.Status.ZERO_AREA),
+    (lambda w: w.add_regular(2, 1.0), carom.Status.TOO_FEW_VERTICES),
+    (lambda w: w.add_regular(carom.MAX_POLYGON_VERTICES + 1, 1.0), carom.Status.TOO_MANY_VERTICES),
+    (lambda w: w.step(0.0), carom.Status.BAD_TIME_STEP),
+    (lambda w: w.step(-0.1), carom.Status.BAD_TIME_STEP),
+    (lambda w: w.step(float("nan")), carom.Status.BAD_TIME_STEP),
+])
+def test_bad_input_raises_with_the_right_status(make, status):
+    with carom.World() as world:
+        with pytest.raises(carom.CaromError) as e:
+            make(world)
+        assert e.value.status == status
+        assert carom.status_string(status) in e.value.message
+        assert len(world) == 0  # nothing was created
+
+
+def test_wrong_python_types_raise_type_error():
+    with carom.World() as world:
+        with pytest.raises(TypeError):
+            world.add_circle("big")
+        with pytest.raises(TypeError):
+            world.add_polygon([(0, 0), (1,), (1, 1)])
+        with pytest.raises(TypeError):
+            world.add_regular(3.5, 1.0)
+
+
+def test_removed_body_handle_raises():
+    with carom.World() as world:
+        a = world.add_circle(1.0)
+        b = world.add_circle(1.0, x=5.0)
+        assert a.is_alive
+        a.remove()
+        assert not a.is_alive
+        assert world.bodies == [b]
+        for use in (lambda: a.position, lambda: a.mass, lambda: a.vertices, a.remove,
+                    lambda: setattr(a, "velocity", (1.0, 0.0))):
+            with pytest.raises(carom.CaromError) as e:
+                use()
+            assert e.value.status == carom.Status.STALE_BODY
+        # the slot is reused, the old handle stays stale
+        c = world.add_circle(1.0)
+        assert c.id != a.id and not a.is_alive and c.is_alive
+
+
+def test_body_of_a_closed_world_raises_cleanly():
+    world = carom.World()
+    body = world.add_box(1.0, 1.0)
+    world.close()
+    assert not body.is_alive
+    with pytest.raises(carom.ClosedWorldError) as e:
+        body.position
+    assert isinstance(e.value, carom.CaromError)
+    assert "closed" in str(e.value)
+    with pytest.raises(carom.ClosedWorldError):
+        body.remove()
+
+
+def test_bodies_keep_their_world_alive():
+    body = carom.World(gravity=(0.0, -1.0)).add_circle(1.0)
+    body.world.step(1.0)  # the World object is only reachable through body
+    assert body.position == pytest.approx((0.0, -0.5))
+    body.world.close()
+
+
+# ------------------------------------------------------------------ scenes
+
+def test_scene_text_loads():
+    with carom.World.from_scene_text(SCENE) as world:
+        assert world.gravity == (0.0, -10.0)
+        bodies = world.bodies
+        assert len(bodies) == 5  # the box and four walls
+        box = bodies[0]
+        assert box.position == (0.0, 2.0) and not box.is_static
+        assert all(wall.is_static for wall in bodies[1:])
+        world.step(0.1)
+        assert box.position[1] < 2.0
+
+
+def test_scene_file_loads(tmp_path):
+    path = tmp_path / "drop.scene"
+    path.write_text("# a comment\n" + SCENE)
+    with carom.World.from_scene(path) as world:
+        assert len(world) == 5
+    with carom.World.from_scene(str(path), friction=0.5) as world:
+        assert world.bodies[0].friction == 0.5  # a setting the scene leaves out
+
+
+def test_bad_scene_raises_with_the_line_number():
+    text = "gravity 0 -10\nbox 1 1 at 0 2\ncircle -1 at 0 5\nbounds -5 0 5 10\n"
+    with pytest.raises(carom.CaromError) as e:
+        carom.World.from_scene_text(text)
+    assert e.value.line == 3
+    assert e.value.status == carom.Status.BAD_SIZE
+    assert e.value.message.startswith("3:")
+
+    with pytest.raises(carom.CaromError) as e:
+        carom.World.from_scene_text("gravity 0 -10\n\nfrobnicate 1 2\n")
+    assert e.value.line == 3
+    assert e.value.status == carom.Status.SCENE_SYNTAX
+
+
+def test_missing_scene_file_raises_io(tmp_path):
+    with pytest.raises(carom.CaromError) as e:
+        carom.World.from_scene(tmp_path / "missing.scene")
+    assert e.value.status == carom.Status.IO

@@ -1,0 +1,307 @@
+//! Hand-written declarations of carom's C ABI (`include/carom.h`, version
+//! 0.x), and a small safe wrapper in [`safe`].
+//!
+//! The raw items keep their C names. C enums are `c_int` type aliases with
+//! constants: a library newer than this crate may return a value the crate
+//! does not know, which a Rust `enum` could not hold.
+//!
+//! The structs with a leading `size` field ([`carom_world_def`],
+//! [`carom_body_def`], [`carom_scene_error`]) must be given the size this
+//! crate knows: [`safe::world_def`] and [`safe::body_def`] return them filled
+//! with the library's defaults and the right size.
+//!
+//! ```
+//! use carom_sys::safe::{self, World};
+//!
+//! let mut def = safe::world_def();
+//! def.gravity_y = -10.0;
+//! let mut world = World::with_def(&def)?;
+//! let mut body = safe::body_def();
+//! body.y = 10.0;
+//! let ball = world.add_circle(&body, 0.5)?;
+//! for _ in 0..10 {
+//!     world.step(0.1)?;
+//! }
+//! let (_, y) = world.position(ball)?;
+//! assert!((y - 5.0).abs() < 1e-9); // y0 - g t^2 / 2, exactly
+//! # Ok::<(), safe::Error>(())
+//! ```
+#![allow(non_camel_case_types)]
+
+use std::marker::{PhantomData, PhantomPinned};
+use std::os::raw::{c_char, c_int, c_void};
+
+// ------------------------------------------------------------------ version
+
+pub const CAROM_VERSION_MAJOR: u32 = 0;
+pub const CAROM_VERSION_MINOR: u32 = 1;
+pub const CAROM_VERSION_PATCH: u32 = 0;
+/// MAJOR * 10000 + MINOR * 100 + PATCH of the header these declarations follow.
+pub const CAROM_VERSION: u32 =
+    CAROM_VERSION_MAJOR * 10000 + CAROM_VERSION_MINOR * 100 + CAROM_VERSION_PATCH;
+
+// ------------------------------------------------------------------- status
+
+pub type carom_status = c_int;
+pub const CAROM_OK: carom_status = 0;
+pub const CAROM_ERR_NULL_ARGUMENT: carom_status = 1;
+pub const CAROM_ERR_NOT_FINITE: carom_status = 2;
+pub const CAROM_ERR_BAD_SIZE: carom_status = 3;
+pub const CAROM_ERR_BAD_DENSITY: carom_status = 4;
+pub const CAROM_ERR_TOO_FEW_VERTICES: carom_status = 5;
+pub const CAROM_ERR_TOO_MANY_VERTICES: carom_status = 6;
+pub const CAROM_ERR_REPEATED_VERTEX: carom_status = 7;
+pub const CAROM_ERR_SELF_INTERSECTING: carom_status = 8;
+pub const CAROM_ERR_ZERO_AREA: carom_status = 9;
+pub const CAROM_ERR_BAD_TIME_STEP: carom_status = 10;
+pub const CAROM_ERR_STALE_BODY: carom_status = 11;
+pub const CAROM_ERR_OUT_OF_MEMORY: carom_status = 12;
+pub const CAROM_ERR_BAD_ARGUMENT: carom_status = 13;
+pub const CAROM_ERR_BAD_STRUCT_SIZE: carom_status = 14;
+pub const CAROM_ERR_TOO_MANY_BODIES: carom_status = 15;
+pub const CAROM_ERR_STATIC_BODY: carom_status = 16;
+pub const CAROM_ERR_SCENE_SYNTAX: carom_status = 17;
+pub const CAROM_ERR_IO: carom_status = 18;
+
+// ------------------------------------------------------------------- limits
+
+pub const CAROM_MAX_POLYGON_VERTICES: i32 = 1024;
+pub const CAROM_MAX_BODIES: i32 = 1 << 24;
+
+// -------------------------------------------------------------------- types
+
+/// A body's id (slot index and generation); 0 is never valid.
+pub type carom_body_id = u64;
+pub const CAROM_NULL_BODY: carom_body_id = 0;
+
+pub type carom_narrow_phase = c_int;
+pub const CAROM_NARROW_SAT: carom_narrow_phase = 0;
+pub const CAROM_NARROW_VERTEX_EDGE: carom_narrow_phase = 1;
+
+pub type carom_body_type = c_int;
+pub const CAROM_DYNAMIC: carom_body_type = 0;
+pub const CAROM_STATIC: carom_body_type = 1;
+
+pub type carom_shape_kind = c_int;
+pub const CAROM_SHAPE_CIRCLE: carom_shape_kind = 0;
+pub const CAROM_SHAPE_POLYGON: carom_shape_kind = 1;
+
+/// The opaque world.
+#[repr(C)]
+pub struct carom_world {
+    _data: [u8; 0],
+    _marker: PhantomData<(*mut u8, PhantomPinned)>,
+}
+
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct carom_allocator {
+    pub alloc: Option<unsafe extern "C" fn(size: usize, user: *mut c_void) -> *mut c_void>,
+    pub free: Option<unsafe extern "C" fn(ptr: *mut c_void, size: usize, user: *mut c_void)>,
+    pub user: *mut c_void,
+}
+
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct carom_world_def {
+    pub size: u32,
+    pub gravity_x: f64,
+    pub gravity_y: f64,
+    pub restitution: f64,
+    pub friction: f64,
+    pub substeps: i32,
+    pub iterations: i32,
+    pub position_correction: f64,
+    pub slop: f64,
+    pub narrow_phase: carom_narrow_phase,
+    pub allocator: carom_allocator,
+}
+
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct carom_body_def {
+    pub size: u32,
+    pub type_: carom_body_type,
+    pub x: f64,
+    pub y: f64,
+    pub angle: f64,
+    pub vx: f64,
+    pub vy: f64,
+    pub spin: f64,
+    pub density: f64,
+    pub restitution: f64,
+    pub friction: f64,
+}
+
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct carom_scene_error {
+    pub size: u32,
+    pub line: i32,
+    pub cause: carom_status,
+    pub message: [c_char; 256],
+}
+
+// ---------------------------------------------------------------- functions
+
+extern "C" {
+    pub fn carom_version() -> u32;
+    pub fn carom_status_string(status: carom_status) -> *const c_char;
+
+    pub fn carom_world_def_init(def: *mut carom_world_def);
+    pub fn carom_world_init(
+        world: *mut *mut carom_world,
+        def: *const carom_world_def,
+    ) -> carom_status;
+    pub fn carom_world_destroy(world: *mut carom_world);
+    pub fn carom_world_update(world: *mut carom_world, dt: f64) -> carom_status;
+    pub fn carom_world_set_gravity(world: *mut carom_world, gx: f64, gy: f64) -> carom_status;
+    pub fn carom_world_get_gravity(
+        world: *const carom_world,
+        gx: *mut f64,
+        gy: *mut f64,
+    ) -> carom_status;
+    pub fn carom_world_body_count(world: *const carom_world) -> i32;
+    pub fn carom_world_get_bodies(
+        world: *const carom_world,
+        ids: *mut carom_body_id,
+        capacity: i32,
+    ) -> i32;
+
+    pub fn carom_world_detect(world: *mut carom_world) -> carom_status;
+    pub fn carom_world_contact_count(world: *const carom_world) -> i32;
+    pub fn carom_world_get_contact(
+        world: *const carom_world,
+        index: i32,
+        a: *mut carom_body_id,
+        b: *mut carom_body_id,
+        px: *mut f64,
+        py: *mut f64,
+        nx: *mut f64,
+        ny: *mut f64,
+        depth: *mut f64,
+    ) -> carom_status;
+
+    pub fn carom_body_def_init(def: *mut carom_body_def);
+    pub fn carom_world_add_circle(
+        world: *mut carom_world,
+        def: *const carom_body_def,
+        radius: f64,
+        id: *mut carom_body_id,
+    ) -> carom_status;
+    pub fn carom_world_add_box(
+        world: *mut carom_world,
+        def: *const carom_body_def,
+        width: f64,
+        height: f64,
+        id: *mut carom_body_id,
+    ) -> carom_status;
+    pub fn carom_world_add_regular(
+        world: *mut carom_world,
+        def: *const carom_body_def,
+        n: i32,
+        side: f64,
+        id: *mut carom_body_id,
+    ) -> carom_status;
+    pub fn carom_world_add_polygon(
+        world: *mut carom_world,
+        def: *const carom_body_def,
+        xy: *const f64,
+        count: i32,
+        id: *mut carom_body_id,
+    ) -> carom_status;
+    pub fn carom_world_remove_body(world: *mut carom_world, id: carom_body_id) -> carom_status;
+    pub fn carom_body_check(world: *const carom_world, id: carom_body_id) -> carom_status;
+
+    pub fn carom_body_get_position(
+        world: *const carom_world,
+        id: carom_body_id,
+        x: *mut f64,
+        y: *mut f64,
+    ) -> carom_status;
+    pub fn carom_body_set_position(
+        world: *mut carom_world,
+        id: carom_body_id,
+        x: f64,
+        y: f64,
+    ) -> carom_status;
+    pub fn carom_body_get_angle(
+        world: *const carom_world,
+        id: carom_body_id,
+        angle: *mut f64,
+    ) -> carom_status;
+    pub fn carom_body_set_angle(
+        world: *mut carom_world,
+        id: carom_body_id,
+        angle: f64,
+    ) -> carom_status;
+    pub fn carom_body_get_velocity(
+        world: *const carom_world,
+        id: carom_body_id,
+        vx: *mut f64,
+        vy: *mut f64,
+    ) -> carom_status;
+    pub fn carom_body_set_velocity(
+        world: *mut carom_world,
+        id: carom_body_id,
+        vx: f64,
+        vy: f64,
+    ) -> carom_status;
+    pub fn carom_body_get_spin(
+        world: *const carom_world,
+        id: carom_body_id,
+        spin: *mut f64,
+    ) -> carom_status;
+    pub fn carom_body_set_spin(
+        world: *mut carom_world,
+        id: carom_body_id,
+        spin: f64,
+    ) -> carom_status;
+    pub fn carom_body_get_mass(
+        world: *const carom_world,
+        id: carom_body_id,
+        mass: *mut f64,
+        inertia: *mut f64,
+        area: *mut f64,
+    ) -> carom_status;
+    pub fn carom_body_get_type(
+        world: *const carom_world,
+        id: carom_body_id,
+        type_: *mut carom_body_type,
+    ) -> carom_status;
+    pub fn carom_body_get_shape(
+        world: *const carom_world,
+        id: carom_body_id,
+        kind: *mut carom_shape_kind,
+        radius: *mut f64,
+    ) -> carom_status;
+    pub fn carom_body_get_material(
+        world: *const carom_world,
+        id: carom_body_id,
+        restitution: *mut f64,
+        friction: *mut f64,
+    ) -> carom_status;
+    pub fn carom_body_get_vertices(
+        world: *const carom_world,
+        id: carom_body_id,
+        xy: *mut f64,
+        capacity: i32,
+        count: *mut i32,
+    ) -> carom_status;
+
+    pub fn carom_scene_load_text(
+        world: *mut *mut carom_world,
+        text: *const c_char,
+        length: usize,
+        def: *const carom_world_def,
+        error: *mut carom_scene_error,
+    ) -> carom_status;
+    pub fn carom_scene_load_file(
+        world: *mut *mut carom_world,
+        path: *const c_char,
+        def: *const carom_world_def,
+        error: *mut carom_scene_error,
+    ) -> carom_status;
+}
+
+pub mod safe;

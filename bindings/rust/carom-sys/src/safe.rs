@@ -1,0 +1,397 @@
+//! A small safe layer: [`World`] owns a `carom_world` and destroys it when
+//! dropped; bodies are plain [`carom_body_id`]s, which the library checks on
+//! every call (a removed body's id gives `CAROM_ERR_STALE_BODY`, never a
+//! dangling pointer).
+
+use super::*;
+use std::ffi::{CStr, CString};
+use std::fmt;
+use std::mem::{size_of, MaybeUninit};
+use std::path::Path;
+use std::ptr::{self, NonNull};
+
+/// A failed call: the status, its sentence from `carom_status_string` (or the
+/// scene loader's message), and for scenes the 1-based line.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Error {
+    pub status: carom_status,
+    pub message: String,
+    pub line: Option<i32>,
+}
+
+impl Error {
+    pub fn from_status(status: carom_status) -> Error {
+        Error {
+            status,
+            message: status_string(status).to_owned(),
+            line: None,
+        }
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} (carom status {})", self.message, self.status)
+    }
+}
+
+impl std::error::Error for Error {}
+
+pub type Result<T> = std::result::Result<T, Error>;
+
+fn check(status: carom_status) -> Result<()> {
+    if status == CAROM_OK {
+        Ok(())
+    } else {
+        Err(Error::from_status(status))
+    }
+}
+
+/// `carom_status_string`: a short English sentence, also for unknown codes.
+pub fn status_string(status: carom_status) -> &'static str {
+    // SAFETY: the library returns a static NUL-terminated string, never NULL.
+    unsafe { CStr::from_ptr(carom_status_string(status)) }
+        .to_str()
+        .unwrap_or("(not UTF-8)")
+}
+
+/// The run-time library's version as (major, minor, patch).
+pub fn version() -> (u32, u32, u32) {
+    // SAFETY: no arguments, no state.
+    let v = unsafe { carom_version() };
+    (v / 10000, v / 100 % 100, v % 100)
+}
+
+/// Room for a def_init of a newer library, whose struct may be larger: it
+/// writes its own sizeof, which must not overrun ours.
+#[repr(C)]
+struct Padded<T> {
+    value: T,
+    spare: [u8; 1024],
+}
+
+/// Fill a size-prefixed struct with the library's defaults, then state the
+/// size this crate knows (the ABI rule: the caller gives its own size).
+/// Returns the struct and the size the library itself reported.
+fn defaults<T: Copy>(init: unsafe extern "C" fn(*mut T)) -> (T, u32) {
+    let mut p = MaybeUninit::<Padded<T>>::zeroed();
+    // SAFETY: the buffer is zeroed (a valid value for these plain C structs,
+    // with None function pointers) and larger than any def the library has.
+    unsafe {
+        init(p.as_mut_ptr() as *mut T);
+        let mut value = p.assume_init().value;
+        let size_field = &mut value as *mut T as *mut u32;
+        let reported = *size_field;
+        *size_field = size_of::<T>() as u32;
+        (value, reported)
+    }
+}
+
+/// World settings with the library's defaults (`carom_world_def_init`).
+pub fn world_def() -> carom_world_def {
+    defaults(carom_world_def_init).0
+}
+
+/// Body settings with the library's defaults (`carom_body_def_init`).
+pub fn body_def() -> carom_body_def {
+    defaults(carom_body_def_init).0
+}
+
+/// The sizes the library reports for (carom_world_def, carom_body_def): equal
+/// to this crate's `size_of` when the declarations match the library.
+pub fn library_def_sizes() -> (u32, u32) {
+    (
+        defaults(carom_world_def_init).1,
+        defaults(carom_body_def_init).1,
+    )
+}
+
+/// One contact point: bodies, point, unit normal from a to b, depth.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Contact {
+    pub a: carom_body_id,
+    pub b: carom_body_id,
+    pub point: (f64, f64),
+    pub normal: (f64, f64),
+    pub depth: f64,
+}
+
+/// An owned world; dropped means destroyed, with all its bodies.
+#[derive(Debug)]
+pub struct World {
+    ptr: NonNull<carom_world>,
+}
+
+impl World {
+    /// A world with default settings.
+    pub fn new() -> Result<World> {
+        World::with_def(&world_def())
+    }
+
+    /// A world with the given settings (its `size` is set to this crate's).
+    pub fn with_def(def: &carom_world_def) -> Result<World> {
+        let mut def = *def;
+        def.size = size_of::<carom_world_def>() as u32;
+        let mut ptr = ptr::null_mut();
+        // SAFETY: valid out-pointer and def.
+        check(unsafe { carom_world_init(&mut ptr, &def) })?;
+        Ok(World {
+            ptr: NonNull::new(ptr).expect("carom_world_init returned OK and NULL"),
+        })
+    }
+
+    fn loaded(
+        load: impl FnOnce(*mut *mut carom_world, *mut carom_scene_error) -> carom_status,
+    ) -> Result<World> {
+        // SAFETY: a zeroed carom_scene_error is valid.
+        let mut err: carom_scene_error = unsafe { MaybeUninit::zeroed().assume_init() };
+        err.size = size_of::<carom_scene_error>() as u32;
+        let mut ptr = ptr::null_mut();
+        let status = load(&mut ptr, &mut err);
+        if status != CAROM_OK {
+            // SAFETY: the library NUL-terminates message; it was zeroed anyway.
+            let msg = unsafe { CStr::from_ptr(err.message.as_ptr()) }.to_string_lossy();
+            return Err(Error {
+                status,
+                message: if msg.is_empty() {
+                    status_string(status).to_owned()
+                } else {
+                    msg.into()
+                },
+                line: if err.line > 0 { Some(err.line) } else { None },
+            });
+        }
+        Ok(World {
+            ptr: NonNull::new(ptr).expect("scene loaded OK and NULL"),
+        })
+    }
+
+    /// Build a world from scene text (docs/scenes.md).
+    pub fn from_scene_text(text: &str) -> Result<World> {
+        World::loaded(|w, e| unsafe {
+            // SAFETY: text and its length; the library does not keep them.
+            carom_scene_load_text(
+                w,
+                text.as_ptr() as *const c_char,
+                text.len(),
+                ptr::null(),
+                e,
+            )
+        })
+    }
+
+    /// Build a world from a scene file.
+    pub fn from_scene_file(path: &Path) -> Result<World> {
+        #[cfg(unix)]
+        let bytes = std::os::unix::ffi::OsStrExt::as_bytes(path.as_os_str()).to_vec();
+        #[cfg(not(unix))]
+        let bytes = path.to_string_lossy().into_owned().into_bytes();
+        let c = CString::new(bytes).map_err(|_| Error {
+            status: CAROM_ERR_BAD_ARGUMENT,
+            message: "the path contains a NUL byte".to_owned(),
+            line: None,
+        })?;
+        // SAFETY: a NUL-terminated path.
+        World::loaded(|w, e| unsafe { carom_scene_load_file(w, c.as_ptr(), ptr::null(), e) })
+    }
+
+    /// The raw handle, for calls this wrapper does not cover. It stays owned
+    /// by `self`.
+    pub fn as_ptr(&self) -> *mut carom_world {
+        self.ptr.as_ptr()
+    }
+
+    /// Advance by `dt` (> 0, finite).
+    pub fn step(&mut self, dt: f64) -> Result<()> {
+        check(unsafe { carom_world_update(self.as_ptr(), dt) })
+    }
+
+    pub fn set_gravity(&mut self, gx: f64, gy: f64) -> Result<()> {
+        check(unsafe { carom_world_set_gravity(self.as_ptr(), gx, gy) })
+    }
+
+    pub fn gravity(&self) -> (f64, f64) {
+        let (mut x, mut y) = (0.0, 0.0);
+        // SAFETY: valid world and out-pointers; cannot fail with them.
+        unsafe { carom_world_get_gravity(self.as_ptr(), &mut x, &mut y) };
+        (x, y)
+    }
+
+    pub fn body_count(&self) -> usize {
+        unsafe { carom_world_body_count(self.as_ptr()) }.max(0) as usize
+    }
+
+    /// The live bodies' ids in creation order.
+    pub fn bodies(&self) -> Vec<carom_body_id> {
+        let n = unsafe { carom_world_get_bodies(self.as_ptr(), ptr::null_mut(), 0) }.max(0);
+        let mut ids = vec![CAROM_NULL_BODY; n as usize];
+        let got = unsafe { carom_world_get_bodies(self.as_ptr(), ids.as_mut_ptr(), n) };
+        ids.truncate(got.clamp(0, n) as usize);
+        ids
+    }
+
+    pub fn add_circle(&mut self, def: &carom_body_def, radius: f64) -> Result<carom_body_id> {
+        let def = sized(def);
+        let mut id = CAROM_NULL_BODY;
+        check(unsafe { carom_world_add_circle(self.as_ptr(), &def, radius, &mut id) })?;
+        Ok(id)
+    }
+
+    pub fn add_box(
+        &mut self,
+        def: &carom_body_def,
+        width: f64,
+        height: f64,
+    ) -> Result<carom_body_id> {
+        let def = sized(def);
+        let mut id = CAROM_NULL_BODY;
+        check(unsafe { carom_world_add_box(self.as_ptr(), &def, width, height, &mut id) })?;
+        Ok(id)
+    }
+
+    pub fn add_regular(
+        &mut self,
+        def: &carom_body_def,
+        n: i32,
+        side: f64,
+    ) -> Result<carom_body_id> {
+        let def = sized(def);
+        let mut id = CAROM_NULL_BODY;
+        check(unsafe { carom_world_add_regular(self.as_ptr(), &def, n, side, &mut id) })?;
+        Ok(id)
+    }
+
+    /// A simple polygon from its vertices, in either winding.
+    pub fn add_polygon(
+        &mut self,
+        def: &carom_body_def,
+        points: &[[f64; 2]],
+    ) -> Result<carom_body_id> {
+        let def = sized(def);
+        let count = i32::try_from(points.len())
+            .map_err(|_| Error::from_status(CAROM_ERR_TOO_MANY_VERTICES))?;
+        let mut id = CAROM_NULL_BODY;
+        // [[f64; 2]] is laid out as x0, y0, x1, y1, ...
+        check(unsafe {
+            carom_world_add_polygon(
+                self.as_ptr(),
+                &def,
+                points.as_ptr() as *const f64,
+                count,
+                &mut id,
+            )
+        })?;
+        Ok(id)
+    }
+
+    pub fn remove_body(&mut self, id: carom_body_id) -> Result<()> {
+        check(unsafe { carom_world_remove_body(self.as_ptr(), id) })
+    }
+
+    pub fn is_alive(&self, id: carom_body_id) -> bool {
+        let status = unsafe { carom_body_check(self.as_ptr(), id) };
+        status == CAROM_OK
+    }
+
+    pub fn position(&self, id: carom_body_id) -> Result<(f64, f64)> {
+        let (mut x, mut y) = (0.0, 0.0);
+        check(unsafe { carom_body_get_position(self.as_ptr(), id, &mut x, &mut y) })?;
+        Ok((x, y))
+    }
+
+    pub fn set_position(&mut self, id: carom_body_id, x: f64, y: f64) -> Result<()> {
+        check(unsafe { carom_body_set_position(self.as_ptr(), id, x, y) })
+    }
+
+    pub fn velocity(&self, id: carom_body_id) -> Result<(f64, f64)> {
+        let (mut x, mut y) = (0.0, 0.0);
+        check(unsafe { carom_body_get_velocity(self.as_ptr(), id, &mut x, &mut y) })?;
+        Ok((x, y))
+    }
+
+    pub fn set_velocity(&mut self, id: carom_body_id, vx: f64, vy: f64) -> Result<()> {
+        check(unsafe { carom_body_set_velocity(self.as_ptr(), id, vx, vy) })
+    }
+
+    pub fn angle(&self, id: carom_body_id) -> Result<f64> {
+        let mut a = 0.0;
+        check(unsafe { carom_body_get_angle(self.as_ptr(), id, &mut a) })?;
+        Ok(a)
+    }
+
+    pub fn spin(&self, id: carom_body_id) -> Result<f64> {
+        let mut w = 0.0;
+        check(unsafe { carom_body_get_spin(self.as_ptr(), id, &mut w) })?;
+        Ok(w)
+    }
+
+    /// (mass, inertia, area); mass and inertia are 0 for a static body.
+    pub fn mass(&self, id: carom_body_id) -> Result<(f64, f64, f64)> {
+        let (mut m, mut i, mut a) = (0.0, 0.0, 0.0);
+        check(unsafe { carom_body_get_mass(self.as_ptr(), id, &mut m, &mut i, &mut a) })?;
+        Ok((m, i, a))
+    }
+
+    /// A polygon's vertices in world coordinates, counter-clockwise; empty
+    /// for a circle.
+    pub fn vertices(&self, id: carom_body_id) -> Result<Vec<[f64; 2]>> {
+        let mut n = 0;
+        check(unsafe { carom_body_get_vertices(self.as_ptr(), id, ptr::null_mut(), 0, &mut n) })?;
+        let mut xy = vec![[0.0f64; 2]; n.max(0) as usize];
+        let mut got = 0;
+        check(unsafe {
+            carom_body_get_vertices(self.as_ptr(), id, xy.as_mut_ptr() as *mut f64, n, &mut got)
+        })?;
+        xy.truncate(got.clamp(0, n) as usize);
+        Ok(xy)
+    }
+
+    /// Contacts found by the last step (or [`World::detect`]).
+    pub fn contacts(&self) -> Vec<Contact> {
+        let n = unsafe { carom_world_contact_count(self.as_ptr()) };
+        (0..n)
+            .filter_map(|i| {
+                let mut c = Contact {
+                    a: 0,
+                    b: 0,
+                    point: (0.0, 0.0),
+                    normal: (0.0, 0.0),
+                    depth: 0.0,
+                };
+                let s = unsafe {
+                    carom_world_get_contact(
+                        self.as_ptr(),
+                        i,
+                        &mut c.a,
+                        &mut c.b,
+                        &mut c.point.0,
+                        &mut c.point.1,
+                        &mut c.normal.0,
+                        &mut c.normal.1,
+                        &mut c.depth,
+                    )
+                };
+                (s == CAROM_OK).then_some(c)
+            })
+            .collect()
+    }
+
+    /// Collision detection alone on the current positions.
+    pub fn detect(&mut self) -> Result<Vec<Contact>> {
+        check(unsafe { carom_world_detect(self.as_ptr()) })?;
+        Ok(self.contacts())
+    }
+}
+
+impl Drop for World {
+    fn drop(&mut self) {
+        // SAFETY: owned, destroyed once.
+        unsafe { carom_world_destroy(self.ptr.as_ptr()) }
+    }
+}
+
+fn sized(def: &carom_body_def) -> carom_body_def {
+    let mut d = *def;
+    d.size = size_of::<carom_body_def>() as u32;
+    d
+}

@@ -1,0 +1,131 @@
+//! The C library through the declarations of this crate, raw and safe.
+use carom_sys::safe::{self, World};
+use carom_sys::*;
+use std::mem::size_of;
+use std::ptr;
+
+#[test]
+fn version_and_struct_sizes_match_the_library() {
+    let (major, _, _) = safe::version();
+    assert_eq!(major, CAROM_VERSION_MAJOR);
+    // def_init writes the library's own sizeof: our #[repr(C)] copies agree.
+    let (world_size, body_size) = safe::library_def_sizes();
+    assert_eq!(world_size as usize, size_of::<carom_world_def>());
+    assert_eq!(body_size as usize, size_of::<carom_body_def>());
+    assert_eq!(safe::body_def().density, 1.0);
+    assert_eq!(safe::world_def().iterations, 8);
+}
+
+#[test]
+fn raw_calls_free_fall_closed_form() {
+    unsafe {
+        let mut wdef = safe::world_def();
+        wdef.gravity_y = -10.0;
+        let mut world: *mut carom_world = ptr::null_mut();
+        assert_eq!(carom_world_init(&mut world, &wdef), CAROM_OK);
+        let mut bdef = safe::body_def();
+        bdef.y = 10.0;
+        let mut id = CAROM_NULL_BODY;
+        assert_eq!(
+            carom_world_add_box(world, &bdef, 1.0, 1.0, &mut id),
+            CAROM_OK
+        );
+        for _ in 0..10 {
+            assert_eq!(carom_world_update(world, 0.1), CAROM_OK);
+        }
+        let (mut x, mut y) = (f64::NAN, f64::NAN);
+        assert_eq!(carom_body_get_position(world, id, &mut x, &mut y), CAROM_OK);
+        assert!(x.abs() < 1e-12 && (y - 5.0).abs() < 1e-9, "({}, {})", x, y);
+        carom_world_destroy(world);
+    }
+}
+
+#[test]
+fn safe_world_free_fall_closed_form() {
+    let (g, dt, n) = (9.81, 1.0 / 60.0, 120);
+    let mut def = safe::world_def();
+    def.gravity_y = -g;
+    let mut world = World::with_def(&def).unwrap();
+    let mut b = safe::body_def();
+    b.x = 1.0;
+    b.y = 100.0;
+    b.vx = 2.0;
+    b.vy = 5.0;
+    let id = world.add_box(&b, 1.0, 2.0).unwrap();
+    for _ in 0..n {
+        world.step(dt).unwrap();
+    }
+    let t = n as f64 * dt;
+    let (x, y) = world.position(id).unwrap();
+    assert!((x - (1.0 + 2.0 * t)).abs() < 1e-9);
+    assert!((y - (100.0 + 5.0 * t - 0.5 * g * t * t)).abs() < 1e-9);
+    let (vx, vy) = world.velocity(id).unwrap();
+    assert!((vx - 2.0).abs() < 1e-12 && (vy - (5.0 - g * t)).abs() < 1e-9);
+    let (m, i, a) = world.mass(id).unwrap();
+    assert!(
+        (m - 2.0).abs() < 1e-12 && (i - 2.0 * 5.0 / 12.0).abs() < 1e-12 && (a - 2.0).abs() < 1e-12
+    );
+    assert_eq!(world.vertices(id).unwrap().len(), 4);
+    assert_eq!(world.bodies(), vec![id]);
+}
+
+#[test]
+fn bad_input_returns_the_right_status() {
+    let mut world = World::new().unwrap();
+    let def = safe::body_def();
+    assert_eq!(
+        world.add_circle(&def, f64::NAN).unwrap_err().status,
+        CAROM_ERR_NOT_FINITE
+    );
+    assert_eq!(
+        world.add_circle(&def, -1.0).unwrap_err().status,
+        CAROM_ERR_BAD_SIZE
+    );
+    assert_eq!(
+        world
+            .add_polygon(&def, &[[0.0, 0.0], [1.0, 0.0]])
+            .unwrap_err()
+            .status,
+        CAROM_ERR_TOO_FEW_VERTICES
+    );
+    assert_eq!(world.step(0.0).unwrap_err().status, CAROM_ERR_BAD_TIME_STEP);
+    let mut dense = def;
+    dense.density = 0.0;
+    assert_eq!(
+        world.add_box(&dense, 1.0, 1.0).unwrap_err().status,
+        CAROM_ERR_BAD_DENSITY
+    );
+    assert_eq!(world.body_count(), 0);
+
+    let err = world.step(f64::INFINITY).unwrap_err();
+    assert_eq!(err.message, safe::status_string(CAROM_ERR_BAD_TIME_STEP));
+
+    // a removed body's id is stale, not dangling
+    let id = world.add_circle(&def, 1.0).unwrap();
+    world.remove_body(id).unwrap();
+    assert!(!world.is_alive(id));
+    assert_eq!(world.position(id).unwrap_err().status, CAROM_ERR_STALE_BODY);
+
+    // a wrong size field is refused (raw call: the safe layer always fixes it)
+    let mut bad = def;
+    bad.size = 8;
+    let mut out = CAROM_NULL_BODY;
+    let s = unsafe { carom_world_add_circle(world.as_ptr(), &bad, 1.0, &mut out) };
+    assert_eq!(s, CAROM_ERR_BAD_STRUCT_SIZE);
+}
+
+#[test]
+fn scenes_load_and_report_the_line() {
+    let world =
+        World::from_scene_text("gravity 0 -10\nbox 1 1 at 0 2\nbounds -5 0 5 10\n").unwrap();
+    assert_eq!(world.gravity(), (0.0, -10.0));
+    assert_eq!(world.body_count(), 5);
+
+    let err = World::from_scene_text("gravity 0 -10\nbox 1 1 at 0 2\ncircle -1\n").unwrap_err();
+    assert_eq!(err.line, Some(3));
+    assert_eq!(err.status, CAROM_ERR_BAD_SIZE);
+    assert!(err.message.starts_with("3:"), "{}", err.message);
+
+    let err = World::from_scene_file(std::path::Path::new("/nonexistent/x.scene")).unwrap_err();
+    assert_eq!(err.status, CAROM_ERR_IO);
+}

@@ -1,0 +1,132 @@
+/* Key and mouse bindings. */
+#include "controls.h"
+
+#include <stdio.h>
+
+#include <gdk/gdkkeysyms.h>
+#include <glib.h>
+
+/* Number keys 1-5 pick a scene from the table. */
+static controls_result controls_scene (demo *d, int index)
+{
+  const scene_entry *e = scenes_get (index);
+  char *path;
+  int ok;
+  if (!e)
+    return CONTROLS_HANDLED;
+  path = scenes_path (e);
+  ok = demo_load (d, e, path);
+  g_free (path);
+  return ok ? CONTROLS_SCENE : CONTROLS_HANDLED;
+}
+
+controls_result controls_key (demo *d, unsigned keyval)
+{
+  switch (keyval)
+    {
+    case GDK_KEY_1: case GDK_KEY_KP_1: return controls_scene (d, 0);
+    case GDK_KEY_2: case GDK_KEY_KP_2: return controls_scene (d, 1);
+    case GDK_KEY_3: case GDK_KEY_KP_3: return controls_scene (d, 2);
+    case GDK_KEY_4: case GDK_KEY_KP_4: return controls_scene (d, 3);
+    case GDK_KEY_5: case GDK_KEY_KP_5: return controls_scene (d, 4);
+    case GDK_KEY_Up:
+      demo_change_gravity (d, 0.0, DEMO_GRAVITY_STEP);
+      break;
+    case GDK_KEY_Down:
+      demo_change_gravity (d, 0.0, -DEMO_GRAVITY_STEP);
+      break;
+    case GDK_KEY_Left:
+      demo_change_gravity (d, -DEMO_GRAVITY_STEP, 0.0);
+      break;
+    case GDK_KEY_Right:
+      demo_change_gravity (d, DEMO_GRAVITY_STEP, 0.0);
+      break;
+    case GDK_KEY_g: case GDK_KEY_G:
+      d->show_gravity = !d->show_gravity;
+      d->gravity_until = 0.0;
+      break;
+    case GDK_KEY_plus: case GDK_KEY_equal: case GDK_KEY_KP_Add: case GDK_KEY_Page_Up:
+      demo_change_restitution (d, DEMO_RESTITUTION_STEP);
+      break;
+    case GDK_KEY_minus: case GDK_KEY_underscore: case GDK_KEY_KP_Subtract: case GDK_KEY_Page_Down:
+      demo_change_restitution (d, -DEMO_RESTITUTION_STEP);
+      break;
+    case GDK_KEY_space:
+      d->paused = !d->paused;
+      break;
+    case GDK_KEY_period: case GDK_KEY_KP_Decimal:
+      d->paused = 1;
+      demo_update (d);
+      break;
+    case GDK_KEY_v: case GDK_KEY_V:
+      d->opt.show_velocities = !d->opt.show_velocities;
+      break;
+    case GDK_KEY_c: case GDK_KEY_C:
+      d->opt.show_contacts = !d->opt.show_contacts;
+      break;
+    case GDK_KEY_r: case GDK_KEY_R:
+      return demo_restart (d) ? CONTROLS_SCENE : CONTROLS_HANDLED;
+    case GDK_KEY_h: case GDK_KEY_H: case GDK_KEY_question: case GDK_KEY_F1:
+      d->show_help = !d->show_help;
+      break;
+    case GDK_KEY_q: case GDK_KEY_Q: case GDK_KEY_Escape:
+      return CONTROLS_QUIT;
+    default:
+      return CONTROLS_IGNORED;
+    }
+  return CONTROLS_HANDLED;
+}
+
+/* While paused nothing steps, so apply the grab and refresh the contacts
+ * here for the picture to follow the mouse. */
+static void controls_follow (demo *d)
+{
+  if (!d->paused)
+    return;
+  grab_update (&d->grab, d->stage.world, demo_now ());
+  carom_world_detect (d->stage.world);
+}
+
+int controls_press (demo *d, double x, double y)
+{
+  double wx, wy;
+  if (!d->entry)
+    return 0;
+  render_to_world (&d->opt, x, y, &wx, &wy);
+  if (!grab_begin (&d->grab, d->stage.world, wx, wy, demo_now (), 2.0 * (d->opt.view_x1 - d->opt.view_x0)))
+    return 0;
+  if (d->verbose)
+    {
+      printf ("carom-demo: grab at %.3f %.3f\n", wx, wy);
+      fflush (stdout);
+    }
+  return 1;
+}
+
+int controls_motion (demo *d, double x, double y)
+{
+  double wx, wy;
+  if (!d->entry || d->grab.body == CAROM_NULL_BODY)
+    return 0;
+  render_to_world (&d->opt, x, y, &wx, &wy);
+  grab_move (&d->grab, wx, wy, demo_now ());
+  controls_follow (d);
+  return 1;
+}
+
+int controls_release (demo *d, double x, double y)
+{
+  double wx, wy;
+  if (!d->entry || d->grab.body == CAROM_NULL_BODY)
+    return 0;
+  render_to_world (&d->opt, x, y, &wx, &wy);
+  grab_move (&d->grab, wx, wy, demo_now ());
+  controls_follow (d);
+  if (d->verbose)
+    {
+      printf ("carom-demo: release at %.3f %.3f\n", wx, wy);
+      fflush (stdout);
+    }
+  grab_end (&d->grab, d->stage.world, demo_now ());
+  return 1;
+}

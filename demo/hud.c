@@ -1,0 +1,148 @@
+/* Status line and help overlay. */
+#include "hud.h"
+
+#include <math.h>
+#include <stdio.h>
+
+void hud_init (hud *h, double now)
+{
+  h->step_ms = 0.0;
+  h->fps = 0.0;
+  h->frames = 0;
+  h->since = now;
+}
+
+void hud_update (hud *h, double now)
+{
+  ++h->frames;
+  if (now - h->since >= 0.5)
+    {
+      h->fps = h->frames / (now - h->since);
+      h->frames = 0;
+      h->since = now;
+    }
+}
+
+void hud_step_time (hud *h, double ms)
+{
+  h->step_ms = h->step_ms > 0.0 ? 0.9 * h->step_ms + 0.1 * ms : ms;
+}
+
+static void hud_font (cairo_t *cr, double size, int bold)
+{
+  cairo_select_font_face (cr, "monospace", CAIRO_FONT_SLANT_NORMAL,
+                          bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size (cr, size);
+}
+
+/* Energy with an SI-style suffix so the field keeps its width. */
+static void hud_energy (char *buf, size_t size, double e)
+{
+  if (!isfinite (e))
+    snprintf (buf, size, "-");
+  else if (fabs (e) >= 1e6)
+    snprintf (buf, size, "%.2fM", e / 1e6);
+  else if (fabs (e) >= 1e4)
+    snprintf (buf, size, "%.1fk", e / 1e3);
+  else
+    snprintf (buf, size, "%.1f", e);
+}
+
+void hud_draw_status (cairo_t *cr, const hud *h, const hud_status *st, double y, double width)
+{
+  char text[256], energy[32], rate[32];
+  cairo_text_extents_t ext;
+  double base = y + HUD_STATUS_HEIGHT - 8.0;
+  cairo_save (cr);
+  cairo_rectangle (cr, 0, y, width, HUD_STATUS_HEIGHT);
+  cairo_set_source_rgb (cr, 0.16, 0.17, 0.19);
+  cairo_fill (cr);
+
+  hud_energy (energy, sizeof energy, st->energy);
+  if (st->paused)
+    snprintf (rate, sizeof rate, "PAUSED");
+  else
+    snprintf (rate, sizeof rate, "%3.0f fps", h->fps);
+  snprintf (text, sizeof text, "%s  %d bodies  %d contacts  %6.2f ms/step  %s  KE %s  e %.2f  g (%.3g, %.3g)%s",
+            st->scene, st->bodies, st->contacts, h->step_ms, rate, energy, st->restitution, st->gx, st->gy,
+            st->holding ? "  holding" : "");
+  hud_font (cr, 12.0, 0);
+  cairo_set_source_rgb (cr, 0.90, 0.91, 0.88);
+  cairo_move_to (cr, 8.0, base);
+  cairo_show_text (cr, text);
+
+  cairo_text_extents (cr, "h: help", &ext);
+  if (width - ext.x_advance - 8.0 > 8.0)
+    {
+      cairo_rectangle (cr, width - ext.x_advance - 16.0, y, ext.x_advance + 16.0, HUD_STATUS_HEIGHT);
+      cairo_set_source_rgb (cr, 0.16, 0.17, 0.19);
+      cairo_fill (cr);
+      cairo_set_source_rgb (cr, 0.62, 0.64, 0.60);
+      cairo_move_to (cr, width - ext.x_advance - 8.0, base);
+      cairo_show_text (cr, "h: help");
+    }
+  cairo_restore (cr);
+}
+
+static const char *const hud_help_lines[][2] = {
+  { "1 2 3 4 5", "scenes: thesis balls pyramid rain gas" },
+  { "arrows", "change gravity" },
+  { "g", "show the gravity vector" },
+  { "+ - PgUp PgDn", "restitution up / down" },
+  { "space", "pause / run" },
+  { ".", "one step while paused" },
+  { "v", "velocity arrows" },
+  { "c", "contact points and normals" },
+  { "r", "restart the scene" },
+  { "h", "this help" },
+  { "q Esc", "quit" },
+  { "mouse", "drag a body, release to throw" },
+};
+
+void hud_draw_help (cairo_t *cr, double width, double height)
+{
+  int n = (int) (sizeof hud_help_lines / sizeof hud_help_lines[0]), i;
+  double line = 19.0, key_w = 0.0, text_w = 0.0, w, h, x, y, r = 8.0, pi = 3.14159265358979323846;
+  cairo_text_extents_t ext;
+  cairo_save (cr);
+  for (i = 0; i < n; ++i)
+    {
+      hud_font (cr, 12.5, 1);
+      cairo_text_extents (cr, hud_help_lines[i][0], &ext);
+      key_w = fmax (key_w, ext.x_advance);
+      hud_font (cr, 12.5, 0);
+      cairo_text_extents (cr, hud_help_lines[i][1], &ext);
+      text_w = fmax (text_w, ext.x_advance);
+    }
+  key_w += 20.0;
+  w = 36.0 + key_w + text_w;
+  h = 48.0 + n * line;
+  x = floor (0.5 * (width - w));
+  y = floor (0.5 * (height - h));
+  cairo_new_sub_path (cr);
+  cairo_arc (cr, x + w - r, y + r, r, -0.5 * pi, 0.0);
+  cairo_arc (cr, x + w - r, y + h - r, r, 0.0, 0.5 * pi);
+  cairo_arc (cr, x + r, y + h - r, r, 0.5 * pi, pi);
+  cairo_arc (cr, x + r, y + r, r, pi, 1.5 * pi);
+  cairo_close_path (cr);
+  cairo_set_source_rgba (cr, 0.12, 0.13, 0.15, 0.88);
+  cairo_fill (cr);
+
+  hud_font (cr, 14.0, 1);
+  cairo_set_source_rgb (cr, 1.0, 1.0, 1.0);
+  cairo_move_to (cr, x + 18.0, y + 28.0);
+  cairo_show_text (cr, "carom demo: keys");
+  for (i = 0; i < n; ++i)
+    {
+      double ty = y + 52.0 + i * line;
+      hud_font (cr, 12.5, 1);
+      cairo_set_source_rgb (cr, 1.0, 0.80, 0.45);
+      cairo_move_to (cr, x + 18.0, ty);
+      cairo_show_text (cr, hud_help_lines[i][0]);
+      hud_font (cr, 12.5, 0);
+      cairo_set_source_rgb (cr, 0.92, 0.92, 0.90);
+      cairo_move_to (cr, x + 18.0 + key_w, ty);
+      cairo_show_text (cr, hud_help_lines[i][1]);
+    }
+  cairo_restore (cr);
+}

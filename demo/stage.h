@@ -1,0 +1,49 @@
+/* The stage: the world a scene file builds, with what the demo needs to
+ * rebuild it (the file's text, its restitution, its walls). The lifecycle
+ * functions are the ones the scene table (scenes.h) lists. */
+#ifndef CAROM_DEMO_STAGE_H
+#define CAROM_DEMO_STAGE_H
+
+#include <stddef.h>
+
+#include <cairo.h>
+
+#include "carom.h"
+#include "render.h"
+#include "walls.h"
+
+typedef struct stage {
+  char *path;            /* the scene file */
+  char *text;            /* its contents, kept to rebuild the world */
+  size_t length;
+  carom_world *world;
+  double restitution;    /* the world's default restitution (the file's,
+                            or what the demo set since) */
+  walls walls;           /* the `bounds` walls, if the file has them */
+  double step_ms;        /* wall-clock time of the last update */
+} stage;
+
+/* Read and load a scene file. On failure the stage is empty, and `message`
+ * (size bytes) holds "FILE:LINE: what is wrong" or "FILE: why". */
+carom_status stage_init (stage *s, const char *path, char *message, size_t size);
+
+/* One carom_world_update of dt, timed into s->step_ms. */
+carom_status stage_update (stage *s, double dt);
+
+/* Paint the world with render_world. */
+void stage_draw (const stage *s, cairo_t *cr, const render_options *opt);
+
+/* Free everything; safe on a zeroed or destroyed stage. */
+void stage_destroy (stage *s);
+
+/* Change the world's default restitution to e. The API has no setter for
+ * it, so the world is rebuilt from the file with `restitution e` appended
+ * and every body's position, angle, velocity and spin copied over (walls
+ * moved by walls_update are moved again). *held, if it names a body of the
+ * old world, is changed to the same body in the new one. */
+carom_status stage_set_restitution (stage *s, double e, carom_body_id *held, char *message, size_t size);
+
+/* Kinetic energy of the dynamic bodies: sum of m v^2 / 2 + I w^2 / 2. */
+double stage_kinetic_energy (const stage *s);
+
+#endif

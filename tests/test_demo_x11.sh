@@ -1,0 +1,247 @@
+#!/bin/sh
+# The GTK demo in a real X server: start Xvfb on a free display, run the
+# demo on scenes/thesis.scene, drive it with xdotool (keys through XTEST,
+# the mouse), dump the window with xwd and check the pictures: not blank,
+# moving while running, still while paused, changed by `.`, `v`, `h` and a
+# mouse drag; every key survives; `q` quits with status 0; --screenshot
+# writes a PNG; a bad scene file fails with FILE:LINE.
+#
+# Usage: tests/test_demo_x11.sh [DEMO-BINARY]     (default build/carom-demo)
+# Needs Xvfb, xdotool and xwd (tools/ensure-deps xtest). ImageMagick, if
+# there, turns the dumps into PNGs. DEMO_X11_OUT=DIR keeps the pictures in
+# DIR (else a temporary directory, removed at the end).
+# Last line: "demo x11: N passed, N failed"; exit status 0 only if none
+# failed.
+set -u
+
+DEMO=${1:-build/carom-demo}
+SCENE=scenes/thesis.scene
+LIMIT=${DEMO_X11_TIMEOUT:-180}   # seconds for the whole test
+
+passed=0
+failed=0
+pass () { passed=$((passed + 1)); echo "ok   $*"; }
+fail () { failed=$((failed + 1)); echo "FAIL $*"; }
+
+xvfb_pid=
+demo_pid=
+watchdog_pid=
+keep=${DEMO_X11_OUT:+1}
+if [ -n "${DEMO_X11_OUT:-}" ]; then
+  OUT=$DEMO_X11_OUT
+  mkdir -p "$OUT"
+else
+  OUT=$(mktemp -d "${TMPDIR:-/tmp}/carom-demo-x11.XXXXXX")
+fi
+
+cleanup () {
+  trap - EXIT INT TERM HUP
+  [ -n "$demo_pid" ] && kill "$demo_pid" 2>/dev/null
+  [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null
+  [ -n "$watchdog_pid" ] && kill "$watchdog_pid" 2>/dev/null
+  [ -n "$demo_pid" ] && wait "$demo_pid" 2>/dev/null
+  [ -n "$xvfb_pid" ] && wait "$xvfb_pid" 2>/dev/null
+  [ -z "$keep" ] && rm -rf "$OUT"
+}
+finish () {
+  echo "demo x11: $passed passed, $failed failed"
+  cleanup
+  [ "$failed" -eq 0 ]
+  exit
+}
+abort () {
+  fail "$*"
+  finish
+}
+trap cleanup EXIT
+trap 'fail "interrupted or timed out after ${LIMIT}s"; finish' INT TERM HUP
+
+for tool in Xvfb xdotool xwd; do
+  command -v "$tool" >/dev/null 2>&1 || abort "$tool is not installed (tools/ensure-deps xtest)"
+done
+[ -x "$DEMO" ] || abort "$DEMO is not built (make demo)"
+[ -f "$SCENE" ] || abort "$SCENE not found: run from the top of the source tree"
+
+# The whole test is bounded: a hung X server or demo cannot block CI.
+( sleep "$LIMIT"; kill -TERM $$ 2>/dev/null ) &
+watchdog_pid=$!
+
+# ------------------------------------------------------------------ X server
+
+# Xvfb picks a free display itself (-displayfd) and writes its number once
+# it accepts connections.
+: >"$OUT/display"
+Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp -noreset 3>"$OUT/display" >"$OUT/xvfb.log" 2>&1 &
+xvfb_pid=$!
+i=0
+while [ ! -s "$OUT/display" ] && [ $i -lt 100 ]; do
+  kill -0 "$xvfb_pid" 2>/dev/null || break
+  sleep 0.1
+  i=$((i + 1))
+done
+[ -s "$OUT/display" ] || abort "Xvfb did not start (see $OUT/xvfb.log)"
+DISPLAY=:$(tr -dc 0-9 <"$OUT/display")
+export DISPLAY
+echo "Xvfb on $DISPLAY"
+xdotool getdisplaygeometry >/dev/null 2>&1 || abort "cannot talk to Xvfb on $DISPLAY"
+
+# ------------------------------------------------------------------ helpers
+
+# shot NAME: dump the demo's window to $OUT/NAME.xwd (and .png if we can).
+shot () {
+  sleep 0.4 # a few frames, so what we asked for is on screen
+  timeout 10 xwd -silent -id "$wid" -out "$OUT/$1.xwd" || fail "xwd could not dump the window for $1"
+  if command -v convert >/dev/null 2>&1; then
+    convert "xwd:$OUT/$1.xwd" "$OUT/$1.png" 2>/dev/null
+  fi
+}
+same () { cmp -s "$OUT/$1.xwd" "$OUT/$2.xwd"; }
+
+# Distinct 32-bit words in a dump: a blank window has a handful.
+colours () { od -An -v -tx4 -w4 "$OUT/$1.xwd" | sort -u | wc -l; }
+
+alive () { kill -0 "$demo_pid" 2>/dev/null; }
+
+key () {
+  timeout 5 xdotool key --delay 60 "$@" || fail "xdotool key $*"
+}
+
+# ------------------------------------------------------------------ the demo
+
+"$DEMO" --verbose "$SCENE" >"$OUT/demo.log" 2>&1 &
+demo_pid=$!
+wid=$(timeout 15 xdotool search --sync --onlyvisible --pid "$demo_pid" 2>/dev/null | head -n 1)
+[ -n "$wid" ] || wid=$(timeout 5 xdotool search --onlyvisible --name '^carom demo' 2>/dev/null | head -n 1)
+[ -n "$wid" ] || abort "no demo window appeared (log: $(tr '\n' ' ' <"$OUT/demo.log"))"
+pass "the demo window appears (id $wid)"
+
+# No window manager: give the window the keyboard ourselves.
+timeout 5 xdotool windowfocus "$wid" 2>/dev/null
+sleep 0.5
+
+shot running1
+n=$(colours running1)
+if [ "$n" -ge 200 ]; then pass "the window is not blank ($n distinct pixel words)"
+else fail "the window looks blank: $n distinct pixel words"; fi
+
+sleep 0.3
+shot running2
+if same running1 running2; then fail "the picture does not change while running"
+else pass "the picture changes while running"; fi
+
+key space
+shot paused1
+sleep 0.8
+shot paused2
+if same paused1 paused2; then pass "space pauses: the picture stays still"
+else fail "the picture changes while paused"; fi
+
+key period
+shot stepped
+if same paused2 stepped; then fail "'.' did not advance a frame while paused"
+else pass "'.' advances one frame while paused"; fi
+
+key v
+shot vectors
+if same stepped vectors; then fail "'v' did not show velocity arrows"
+else pass "'v' shows velocity arrows"; fi
+key v
+shot vectors_off
+if same stepped vectors_off; then pass "'v' again hides them (picture as before)"
+else fail "'v' twice does not give the same picture back"; fi
+
+key h
+shot help
+if same stepped help; then fail "'h' did not show the help"
+else pass "'h' shows the help overlay"; fi
+key h
+shot help_off
+
+# Restart (still paused), then drag the square (box at 4, 6.8 in the scene
+# file): the demo prints its view, from which we find it on the screen.
+key r
+shot restarted
+if same help_off restarted; then fail "'r' did not restart the scene"
+else pass "'r' restarts the scene"; fi
+view=$(grep 'view' "$OUT/demo.log" | tail -n 1)
+eval "$(timeout 5 xdotool getwindowgeometry --shell "$wid")"
+pos=$(echo "$view" | awk -v wx=4 -v wy=6.8 -v ox="${X:-0}" -v oy="${Y:-0}" '{
+  x0 = $3; y0 = $4; x1 = $5; y1 = $6; split ($8, s, "x"); w = s[1]; h = s[2];
+  k = w / (x1 - x0); if (h / (y1 - y0) < k) k = h / (y1 - y0);
+  printf "%d %d", ox + 0.5 * (w - (x1 - x0) * k) + (wx - x0) * k, oy + h - 0.5 * (h - (y1 - y0) * k) - (wy - y0) * k }')
+if [ -n "$pos" ]; then
+  set -- $pos
+  timeout 5 xdotool mousemove "$1" "$2" mousedown 1 \
+    mousemove "$(($1 + 20))" "$(($2 + 10))" mousemove "$(($1 + 60))" "$(($2 + 40))" mouseup 1
+  shot dragged
+  if grep -q 'grab at' "$OUT/demo.log"; then pass "pressing on a body grabs it"
+  else fail "no body grabbed at pixel $pos (view: $view)"; fi
+  if same restarted dragged; then fail "dragging did not move the body"
+  else pass "dragging moves the body while paused"; fi
+else
+  fail "the demo did not print its view (--verbose)"
+fi
+
+# Every key, twice over, including scene switches: the demo must survive.
+key 2 3 4 5 1 Up Up Left Right Down g g plus plus minus Page_Up Page_Down c c r v h h \
+  space period period space KP_Add KP_Subtract equal question
+key Home F5 x 0 9 BackSpace Tab Return
+sleep 0.5
+if alive; then pass "every key is survived"
+else fail "the demo died during the key test"; fi
+
+# Restitution: the bar shows up after + (the world is rebuilt keeping states).
+key space
+shot before_e
+key minus
+shot after_e
+if same before_e after_e; then fail "'-' changed nothing on screen"
+else pass "'-' lowers restitution and shows the bar"; fi
+alive || fail "the demo died changing restitution"
+
+# Resizing: the walls move (the demo prints the new view).
+timeout 5 xdotool windowsize "$wid" 1000 700 2>/dev/null
+sleep 1
+if grep -q 'in 1000x676 px' "$OUT/demo.log" && alive; then pass "resizing the window refits the view"
+else fail "no refit after resizing to 1000x700"; fi
+shot resized
+
+key q
+i=0
+while alive && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+if alive; then fail "'q' did not quit"
+else
+  wait "$demo_pid"
+  rc=$?
+  demo_pid=
+  if [ $rc -eq 0 ]; then pass "'q' quits with status 0"; else fail "'q' quit with status $rc"; fi
+fi
+
+# ------------------------------------------------------------ batch modes
+
+if timeout 60 "$DEMO" --frames 30 --screenshot "$OUT/self.png" "$SCENE" >"$OUT/self.log" 2>&1 \
+  && [ "$(head -c 4 "$OUT/self.png" | od -An -tx1 | tr -d ' \n')" = 89504e47 ]; then
+  pass "--frames 30 --screenshot writes a PNG and exits 0"
+else
+  fail "--screenshot failed: $(tr '\n' ' ' <"$OUT/self.log")"
+fi
+
+timeout 60 "$DEMO" --paused --frames 5 --screenshot "$OUT/paused5.png" "$SCENE" >/dev/null 2>&1
+timeout 60 "$DEMO" --paused --frames 25 --screenshot "$OUT/paused25.png" "$SCENE" >/dev/null 2>&1
+if [ -s "$OUT/paused5.png" ] && cmp -s "$OUT/paused5.png" "$OUT/paused25.png"; then
+  pass "--paused: the same picture after 5 and 25 frames"
+else
+  fail "--paused pictures differ (or are missing)"
+fi
+
+printf 'gravity 0 -10\nbox -1 1 at 0 0\n' >"$OUT/bad.scene"
+timeout 20 "$DEMO" --frames 1 "$OUT/bad.scene" >"$OUT/bad.log" 2>&1
+rc=$?
+if [ $rc -eq 1 ] && grep -q "^$OUT/bad.scene:2: " "$OUT/bad.log"; then
+  pass "a bad scene file: FILE:LINE: message, status 1"
+else
+  fail "bad scene file: status $rc, output: $(tr '\n' ' ' <"$OUT/bad.log")"
+fi
+
+[ -n "$keep" ] && echo "pictures in $OUT"
+finish
