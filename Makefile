@@ -41,7 +41,17 @@ $(BUILD)/pic/%.o: lib/%.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Ilib $(WARN) $(OPT) $(CFLAGS) -fvisibility=hidden -fPIC -c $< -o $@
 
+# The static library is one relocatable object whose hidden (internal)
+# symbols are made local, so a program linking it statically sees only
+# carom_* names and cannot clash with ours. Tests, which call internal
+# functions, link the plain archive instead.
 $(BUILD)/libcarom.a: $(LIB_OBJ)
+	@rm -f $@
+	ld -r -o $(BUILD)/carom-all.o $^
+	objcopy --localize-hidden $(BUILD)/carom-all.o
+	ar rcs $@ $(BUILD)/carom-all.o
+
+$(BUILD)/libcarom-internal.a: $(LIB_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
@@ -62,7 +72,7 @@ $(BUILD)/tests/%.o: tests/%.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Ilib -Itests $(WARN) $(OPT) $(CFLAGS) -c $< -o $@
 
-$(BUILD)/tests/test_%: $(BUILD)/tests/test_%.o $(BUILD)/tests/support.o $(BUILD)/libcarom.a
+$(BUILD)/tests/test_%: $(BUILD)/tests/test_%.o $(BUILD)/tests/support.o $(BUILD)/libcarom-internal.a
 	$(CC) $(LDFLAGS) -o $@ $^ -lcmocka -lm
 
 # Every test: the cmocka binaries under Valgrind, the README's example, and

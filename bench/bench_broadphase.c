@@ -38,7 +38,7 @@ static int run (int n)
     {
       carom_body_def bd;
       double size = bench_rng_range (&r, 0.5, 1.0);
-      carom_body_def_init (&bd);
+      carom_body_def_init (&bd, sizeof bd);
       bd.x = x[i] = bench_rng_range (&r, 0.0, side);
       bd.y = y[i] = bench_rng_range (&r, 0.0, side);
       bd.angle = bench_rng_range (&r, 0.0, 6.283185307179586);

@@ -43,7 +43,7 @@ static int build (carom_world **world, const bench_scene *s, const bench_options
 {
   carom_world_def def;
   int i;
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   def.gravity_x = s->gravity_x;
   def.gravity_y = s->gravity_y;
   def.restitution = s->restitution;
@@ -65,7 +65,7 @@ static int build (carom_world **world, const bench_scene *s, const bench_options
       const bench_body *b = &s->bodies[i];
       carom_body_def bd;
       carom_status st;
-      carom_body_def_init (&bd);
+      carom_body_def_init (&bd, sizeof bd);
       bd.type = b->is_static ? CAROM_STATIC : CAROM_DYNAMIC;
       bd.x = b->x, bd.y = b->y, bd.angle = b->angle;
       bd.vx = b->vx, bd.vy = b->vy, bd.spin = b->spin;
@@ -207,7 +207,7 @@ int main (int argc, char **argv)
     return 1;
   {
     carom_world_def def;
-    carom_world_def_init (&def);
+    carom_world_def_init (&def, sizeof def);
     snprintf (settings, sizeof settings, "substeps=%d,iterations=%d", o.substeps > 0 ? o.substeps : def.substeps,
               o.iterations > 0 ? o.iterations : def.iterations);
   }

@@ -198,7 +198,7 @@ carom_status walls_update (walls *w, carom_world *world, double right, double to
   if (right == w->right && top == w->top)
     return CAROM_OK;
   walls_layout (w->x0, w->y0, right, top, w->thickness, centre, size);
-  carom_body_def_init (&def);
+  carom_body_def_init (&def, sizeof def);
   def.type = CAROM_STATIC;
   def.restitution = w->restitution;
   def.friction = w->friction;

@@ -8,8 +8,12 @@
  * nothing when it fails. Bodies are named by carom_body_id values: a removed
  * body's id is detected as stale (CAROM_ERR_STALE_BODY), never dereferenced.
  *
- * Structs that cross the ABI start with a `size` field that the matching
- * *_def_init function fills in; fields are only ever appended.
+ * Structs that cross the ABI start with a `size` field and only ever grow by
+ * appending fields. Callers fill them with the matching *_def_init, passing
+ * the size they were compiled with (`carom_world_def_init (&def, sizeof def)`):
+ * a program built against an older header keeps working with a newer
+ * library, which uses defaults for the fields the program does not know.
+ * Enums are 32-bit (each has a 0x7fffffff member to pin its size).
  */
 #ifndef CAROM_H
 #define CAROM_H
@@ -64,6 +68,7 @@ typedef enum carom_status {
   CAROM_ERR_STATIC_BODY = 16,       /**< the call needs a dynamic body */
   CAROM_ERR_SCENE_SYNTAX = 17,      /**< a scene file line is malformed */
   CAROM_ERR_IO = 18,                /**< a file could not be read */
+  CAROM_STATUS_FORCE_32 = 0x7fffffff
 } carom_status;
 
 /** A short English sentence for a status; never NULL, also for unknown codes. */
@@ -103,11 +108,12 @@ typedef enum carom_narrow_phase {
   CAROM_NARROW_SAT = 0,
   /** The thesis' vertex-edge method on the true outline (thesis 3.2.2). */
   CAROM_NARROW_VERTEX_EDGE = 1,
+  CAROM_NARROW_FORCE_32 = 0x7fffffff
 } carom_narrow_phase;
 
 /** World settings. Fill with carom_world_def_init, then change fields. */
 typedef struct carom_world_def {
-  uint32_t size;           /**< sizeof (carom_world_def), set by def_init */
+  uint32_t size;           /**< the caller's sizeof, set by def_init */
   double gravity_x;        /**< uniform gravity, default (0, 0) */
   double gravity_y;
   double restitution;      /**< default e for bodies, in [0, 1]; default 0 */
@@ -124,8 +130,14 @@ typedef struct carom_world_def {
   carom_allocator allocator; /**< alloc == NULL means malloc/free */
 } carom_world_def;
 
-/** Fill `def` with the defaults above and set its size field. */
-CAROM_API void carom_world_def_init (carom_world_def *def);
+/**
+ * Fill `def` with the defaults above and set its size field to `size`, the
+ * caller's sizeof (carom_world_def); writes no byte past `size`. Errors:
+ * NULL_ARGUMENT, BAD_STRUCT_SIZE (smaller than version 0.1's struct or larger
+ * than this library's).
+ */
+CAROM_API carom_status carom_world_def_init (carom_world_def *def,
+                                             uint32_t size);
 
 /**
  * Create a world. `def` may be NULL for the defaults.
@@ -192,17 +204,19 @@ CAROM_API carom_status carom_world_get_contact (const carom_world *world,
 typedef enum carom_body_type {
   CAROM_DYNAMIC = 0, /**< moves under forces and impulses */
   CAROM_STATIC = 1,  /**< never moves: infinite mass (zero inverse mass) */
+  CAROM_BODY_TYPE_FORCE_32 = 0x7fffffff
 } carom_body_type;
 
 /** Shape kinds, as reported by carom_body_get_shape. */
 typedef enum carom_shape_kind {
   CAROM_SHAPE_CIRCLE = 0,
   CAROM_SHAPE_POLYGON = 1, /**< boxes and regular polygons are polygons too */
+  CAROM_SHAPE_KIND_FORCE_32 = 0x7fffffff
 } carom_shape_kind;
 
 /** Body settings. Fill with carom_body_def_init, then change fields. */
 typedef struct carom_body_def {
-  uint32_t size;        /**< sizeof (carom_body_def), set by def_init */
+  uint32_t size;        /**< the caller's sizeof, set by def_init */
   carom_body_type type; /**< default CAROM_DYNAMIC */
   double x, y;          /**< position of the centre of mass; default 0 */
   double angle;         /**< radians, counter-clockwise; default 0 */
@@ -213,8 +227,9 @@ typedef struct carom_body_def {
   double friction;      /**< mu >= 0, or < 0 for the world default */
 } carom_body_def;
 
-/** Fill `def` with the defaults above and set its size field. */
-CAROM_API void carom_body_def_init (carom_body_def *def);
+/** Fill `def` with the defaults above, as carom_world_def_init does. */
+CAROM_API carom_status carom_body_def_init (carom_body_def *def,
+                                            uint32_t size);
 
 /**
  * Add a circle of radius `radius` centred on (def->x, def->y). Inertia
@@ -323,7 +338,7 @@ CAROM_API carom_status carom_body_get_vertices (const carom_world *world,
 
 /** Where and why a scene failed to load. */
 typedef struct carom_scene_error {
-  uint32_t size;         /**< sizeof (carom_scene_error); set by the caller */
+  uint32_t size;         /**< the caller's sizeof; set by the caller */
   int32_t line;          /**< 1-based line of the error, 0 if none */
   carom_status cause;    /**< the status that rejected the line */
   char message[256];     /**< "LINE: what is wrong", NUL-terminated */

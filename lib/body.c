@@ -4,6 +4,7 @@
 
 #include <string.h>
 
+#include "def.h"
 #include "world.h"
 
 void bodies_init (carom_world *world)
@@ -71,8 +72,6 @@ void body_sync (body *b)
 
 static carom_status check_def (const carom_body_def *def)
 {
-  if (def->size != sizeof (carom_body_def))
-    return CAROM_ERR_BAD_STRUCT_SIZE;
   if (!is_finite (def->x) || !is_finite (def->y) || !is_finite (def->angle) || !is_finite (def->vx)
       || !is_finite (def->vy) || !is_finite (def->spin) || !is_finite (def->density)
       || !is_finite (def->restitution) || !is_finite (def->friction))
@@ -84,18 +83,6 @@ static carom_status check_def (const carom_body_def *def)
   if (def->restitution > 1.0)
     return CAROM_ERR_BAD_ARGUMENT;
   return CAROM_OK;
-}
-
-void carom_body_def_init (carom_body_def *def)
-{
-  if (!def)
-    return;
-  memset (def, 0, sizeof *def);
-  def->size = sizeof *def;
-  def->type = CAROM_DYNAMIC;
-  def->density = 1.0;
-  def->restitution = -1.0;
-  def->friction = -1.0;
 }
 
 /* Make sure a slot is free and that removing a body later cannot fail for
@@ -153,16 +140,17 @@ static carom_body_id commit_body (carom_world *world, const carom_body_def *def,
   return body_id_of (world, slot);
 }
 
-static carom_status begin_add (carom_world *world, const carom_body_def **def, carom_body_def *defaults)
+/* Read the caller's def (any known version, or NULL for the defaults) into
+ * `local` and point *def at it. */
+static carom_status begin_add (carom_world *world, const carom_body_def **def, carom_body_def *local)
 {
   carom_status st;
   if (!world)
     return CAROM_ERR_NULL_ARGUMENT;
-  if (!*def)
-    {
-      carom_body_def_init (defaults);
-      *def = defaults;
-    }
+  st = body_def_import (*def, local);
+  if (st != CAROM_OK)
+    return st;
+  *def = local;
   st = check_def (*def);
   if (st != CAROM_OK)
     return st;

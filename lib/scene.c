@@ -8,6 +8,7 @@
  * never sees part of a scene. */
 #include "alloc.h"
 #include "carom.h"
+#include "def.h"
 #include "shape.h"
 
 #include <errno.h>
@@ -110,7 +111,9 @@ static carom_status scene_fail (scene_parser *p, carom_status cause, const char 
 
 static void scene_report (const scene_parser *p, carom_scene_error *error)
 {
-  if (!error || error->size != sizeof (carom_scene_error))
+  /* every field of the 0.1 layout; fields appended later would be written
+   * only when error->size covers them */
+  if (!error || error->size < SCENE_ERROR_SIZE_0_1)
     return;
   error->line = p->status == CAROM_OK ? 0 : p->line;
   error->cause = p->status;
@@ -536,7 +539,7 @@ static carom_status scene_statement_run (scene_parser *p)
     return CAROM_OK; /* applied in the first pass */
   p->num_count = 0;
   p->opts = 0;
-  carom_body_def_init (&p->body);
+  carom_body_def_init (&p->body, sizeof p->body);
   if (!st->words)
     {
       s = scene_arguments (p, st);
@@ -637,14 +640,11 @@ static carom_status scene_parser_init (scene_parser *p, const carom_world_def *d
 {
   carom_status s;
   memset (p, 0, sizeof *p);
-  carom_world_def_init (&p->def);
-  if (def)
-    {
-      if (def->size != sizeof (carom_world_def))
-        return scene_fail (p, CAROM_ERR_BAD_STRUCT_SIZE, "the world def's size field is %lu, expected %lu",
-                           (unsigned long) def->size, (unsigned long) sizeof (carom_world_def));
-      p->def = *def;
-    }
+  s = world_def_import (def, &p->def);
+  if (s != CAROM_OK)
+    return scene_fail (p, s, "the world def's size field is %lu, this library knows %lu to %lu",
+                       (unsigned long) def->size, (unsigned long) WORLD_DEF_SIZE_0_1,
+                       (unsigned long) sizeof (carom_world_def));
   /* checked before its allocator is used for scratch memory */
   s = scene_check_def (&p->def);
   if (s != CAROM_OK)

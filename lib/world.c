@@ -5,26 +5,12 @@
 
 #include <string.h>
 
+#include "def.h"
 #include "gravity.h"
 #include "solver.h"
 
-void carom_world_def_init (carom_world_def *def)
-{
-  if (!def)
-    return;
-  memset (def, 0, sizeof *def);
-  def->size = sizeof *def;
-  def->substeps = 1;
-  def->iterations = 8;
-  def->position_correction = 0.2;
-  def->slop = 0.01;
-  def->narrow_phase = CAROM_NARROW_SAT;
-}
-
 static carom_status check_def (const carom_world_def *def)
 {
-  if (def->size != sizeof (carom_world_def))
-    return CAROM_ERR_BAD_STRUCT_SIZE;
   if (!is_finite (def->gravity_x) || !is_finite (def->gravity_y) || !is_finite (def->restitution)
       || !is_finite (def->friction) || !is_finite (def->position_correction) || !is_finite (def->slop))
     return CAROM_ERR_NOT_FINITE;
@@ -39,17 +25,16 @@ static carom_status check_def (const carom_world_def *def)
 
 carom_status carom_world_init (carom_world **world, const carom_world_def *def)
 {
-  carom_world_def defaults;
+  carom_world_def settings;
   carom_world *w;
   carom_status st;
   if (!world)
     return CAROM_ERR_NULL_ARGUMENT;
   *world = NULL;
-  if (!def)
-    {
-      carom_world_def_init (&defaults);
-      def = &defaults;
-    }
+  st = world_def_import (def, &settings);
+  if (st != CAROM_OK)
+    return st;
+  def = &settings;
   st = check_def (def);
   if (st != CAROM_OK)
     return st;

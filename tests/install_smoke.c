@@ -35,11 +35,11 @@ int main (void)
       return 1;
     }
 
-  carom_world_def_init (&wdef);
+  carom_world_def_init (&wdef, sizeof wdef);
   wdef.gravity_y = -10.0;
   CHECK (carom_world_init (&world, &wdef));
 
-  carom_body_def_init (&bdef);
+  carom_body_def_init (&bdef, sizeof bdef);
   bdef.y = 10.0;
   CHECK (carom_world_add_box (world, &bdef, 1.0, 1.0, &box));
   for (i = 0; i < 10; ++i)

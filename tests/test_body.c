@@ -161,7 +161,7 @@ static void test_circle_inertia_and_vertices (void **state)
   assert_near_rel (inertia, 0.5 * m * 0.25, 1e-15);
   assert_status (carom_body_get_vertices (w, c, xy, 4, &count), CAROM_OK);
   assert_int_equal (count, 0);
-  carom_body_def_init (&def);
+  carom_body_def_init (&def, sizeof def);
   def.x = 10, def.y = 20, def.angle = M_PI / 2;
   assert_status (carom_world_add_box (w, &def, 2, 1, &b), CAROM_OK);
   assert_status (carom_body_get_vertices (w, b, xy, 4, &count), CAROM_OK);
@@ -177,7 +177,7 @@ static void test_static_body_has_no_inverse_infinity (void **state)
   carom_body_def def;
   carom_body_id id;
   double m = -1, inertia = -1;
-  carom_body_def_init (&def);
+  carom_body_def_init (&def, sizeof def);
   def.type = CAROM_STATIC;
   assert_status (carom_world_add_box (w, &def, 10, 1, &id), CAROM_OK);
   carom_body_get_mass (w, id, &m, &inertia, NULL);
@@ -237,18 +237,18 @@ static void test_bad_shapes_and_defs (void **state)
   assert_status (carom_world_add_regular (w, NULL, CAROM_MAX_POLYGON_VERTICES + 1, 1.0, NULL),
                  CAROM_ERR_TOO_MANY_VERTICES);
   assert_status (carom_world_add_regular (w, NULL, 5, -2.0, NULL), CAROM_ERR_BAD_SIZE);
-  carom_body_def_init (&def);
+  carom_body_def_init (&def, sizeof def);
   def.density = 0.0;
   assert_status (carom_world_add_circle (w, &def, 1.0, NULL), CAROM_ERR_BAD_DENSITY);
   def.density = -1.0;
   assert_status (carom_world_add_box (w, &def, 1.0, 1.0, NULL), CAROM_ERR_BAD_DENSITY);
-  carom_body_def_init (&def);
+  carom_body_def_init (&def, sizeof def);
   def.vx = NAN;
   assert_status (carom_world_add_circle (w, &def, 1.0, NULL), CAROM_ERR_NOT_FINITE);
-  carom_body_def_init (&def);
+  carom_body_def_init (&def, sizeof def);
   def.restitution = 1.5;
   assert_status (carom_world_add_circle (w, &def, 1.0, NULL), CAROM_ERR_BAD_ARGUMENT);
-  carom_body_def_init (&def);
+  carom_body_def_init (&def, sizeof def);
   def.size = 4;
   assert_status (carom_world_add_circle (w, &def, 1.0, NULL), CAROM_ERR_BAD_STRUCT_SIZE);
   assert_int_equal (carom_world_body_count (w), 0);

@@ -140,7 +140,7 @@ static carom_world *new_world (double restitution)
 {
   carom_world *w = NULL;
   carom_world_def def;
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   def.restitution = restitution;
   assert_status (carom_world_init (&w, &def), CAROM_OK);
   return w;
@@ -168,7 +168,7 @@ static void test_equal_masses_head_on_swap_velocities (void **state)
   carom_body_id a, b;
   double va, vb, vy;
   (void) state;
-  carom_body_def_init (&d);
+  carom_body_def_init (&d, sizeof d);
   d.x = -1.5, d.vx = 2.0;
   assert_status (carom_world_add_circle (w, &d, 0.5, &a), CAROM_OK);
   d.x = 1.5, d.vx = -1.0;
@@ -196,11 +196,11 @@ static void test_off_centre_elastic_conserves_energy_and_momentum (void **state)
       carom_body_id a, b;
       double e0, e1, px0, py0, l0, px1, py1, l1;
       const double tri[] = {0, 0, 1.2, 0.1, 0.3, 0.9};
-      carom_body_def_init (&d);
+      carom_body_def_init (&d, sizeof d);
       d.x = -2.0, d.y = 0.08 * trial - 0.45, d.vx = 3.0 + 0.1 * trial, d.vy = 0.05, d.spin = 0.7 - 0.1 * trial;
       d.angle = 0.37 * trial;
       assert_status (carom_world_add_box (w, &d, 1.0, 0.6, &a), CAROM_OK);
-      carom_body_def_init (&d);
+      carom_body_def_init (&d, sizeof d);
       d.x = 1.0, d.y = 0.1, d.vx = -1.0, d.vy = -0.02 * trial, d.spin = -1.3, d.density = 2.5, d.angle = -0.21 * trial;
       if (trial % 2)
         assert_status (carom_world_add_polygon (w, &d, tri, 3, &b), CAROM_OK);
@@ -228,7 +228,7 @@ static void test_inelastic_relative_normal_velocity_is_zero (void **state)
   carom_body_id a, b;
   double va, vb, e0, e1;
   (void) state;
-  carom_body_def_init (&d);
+  carom_body_def_init (&d, sizeof d);
   d.x = -1.0, d.vx = 4.0;
   assert_status (carom_world_add_box (w, &d, 1, 1, &a), CAROM_OK);
   d.x = 1.0, d.vx = 0.0, d.density = 3.0;
@@ -256,7 +256,7 @@ static void test_restitution_scales_separation_speed (void **state)
   carom_body_id a, b;
   double va, vb;
   (void) state;
-  carom_body_def_init (&d);
+  carom_body_def_init (&d, sizeof d);
   d.x = -1.0, d.vx = 3.0;
   assert_status (carom_world_add_circle (w, &d, 0.4, &a), CAROM_OK);
   d.x = 1.0, d.vx = -1.0;
@@ -280,14 +280,14 @@ static void test_box_rests_on_floor (void **state)
   double y, vy, angle, y_prev = 0;
   int step;
   (void) state;
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   def.gravity_y = -10;
   assert_status (carom_world_init (&w, &def), CAROM_OK);
-  carom_body_def_init (&d);
+  carom_body_def_init (&d, sizeof d);
   d.type = CAROM_STATIC;
   d.y = -0.5;
   assert_status (carom_world_add_box (w, &d, 20, 1, NULL), CAROM_OK);
-  carom_body_def_init (&d);
+  carom_body_def_init (&d, sizeof d);
   d.y = 1.0;
   assert_status (carom_world_add_box (w, &d, 1, 1, &box), CAROM_OK);
   for (step = 0; step < 600; ++step)
@@ -322,16 +322,16 @@ static void test_u_shape_catches_box_in_notch (void **state)
       carom_body_id u_id, box;
       double ux, uy, x, y;
       int step;
-      carom_world_def_init (&def);
+      carom_world_def_init (&def, sizeof def);
       def.gravity_y = -10;
       def.friction = 0.3;
       def.narrow_phase = mode ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
       assert_status (carom_world_init (&w, &def), CAROM_OK);
-      carom_body_def_init (&d);
+      carom_body_def_init (&d, sizeof d);
       d.type = CAROM_STATIC;
       assert_status (carom_world_add_polygon (w, &d, u, 8, &u_id), CAROM_OK);
       carom_body_get_position (w, u_id, &ux, &uy); /* the U's centroid, (0, 0) */
-      carom_body_def_init (&d);
+      carom_body_def_init (&d, sizeof d);
       /* the notch spans x in [1, 2] and y in [1, 3] of the input frame,
        * whose centroid is (1.5, 9.5 / 7) */
       d.x = 0.0, d.y = 3.0;

@@ -217,7 +217,7 @@ static void test_def_defaults (void **state)
   double gx, gy;
   const char *t1 = "circle 1\n", *t2 = "gravity 1 2\n";
   (void) state;
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   def.gravity_y = -3.0;
   assert_status (carom_scene_load_text (&w, t1, strlen (t1), &def, NULL), CAROM_OK);
   carom_world_get_gravity (w, &gx, &gy);
@@ -444,7 +444,7 @@ static void test_allocator_and_out_of_memory (void **state)
   carom_world *w = NULL;
   long k;
   (void) state;
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   def.allocator.alloc = counting_alloc;
   def.allocator.free = counting_free;
   def.allocator.user = &c;

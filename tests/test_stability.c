@@ -9,7 +9,7 @@ static carom_world *world_with (double gx, double gy, double restitution, double
 {
   carom_world *w = NULL;
   carom_world_def def;
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   def.gravity_x = gx, def.gravity_y = gy;
   def.restitution = restitution;
   def.friction = friction;
@@ -20,7 +20,7 @@ static carom_world *world_with (double gx, double gy, double restitution, double
 static void add_static_box (carom_world *w, double x, double y, double wd, double ht)
 {
   carom_body_def d;
-  carom_body_def_init (&d);
+  carom_body_def_init (&d, sizeof d);
   d.type = CAROM_STATIC;
   d.x = x, d.y = y;
   assert_status (carom_world_add_box (w, &d, wd, ht, NULL), CAROM_OK);
@@ -50,7 +50,7 @@ static carom_body_id build_stack (carom_world *w, int n, double size, double ox,
   carom_body_id top = 0;
   int i;
   add_static_box (w, ox, oy - 0.5 * size, 20 * size, size);
-  carom_body_def_init (&d);
+  carom_body_def_init (&d, sizeof d);
   for (i = 0; i < n; ++i)
     {
       d.x = ox, d.y = oy + (i + 0.5) * size;
@@ -119,7 +119,7 @@ static void test_bullet_300_never_passes_thin_wall (void **state)
       double x;
       int step;
       add_static_box (w, 10.0, 0.0, 0.1, 4.0);
-      carom_body_def_init (&d);
+      carom_body_def_init (&d, sizeof d);
       d.x = -3.3, d.vx = 300.0;
       if (shape)
         assert_status (carom_world_add_regular (w, &d, 5, 0.1, &b), CAROM_OK);
@@ -146,7 +146,7 @@ static void test_overlap_recovery_adds_no_energy (void **state)
   double xa, xb;
   int step;
   (void) state;
-  carom_body_def_init (&d);
+  carom_body_def_init (&d, sizeof d);
   d.x = -0.25;
   assert_status (carom_world_add_box (w, &d, 1, 1, &a), CAROM_OK);
   d.x = 0.25, d.angle = 0.1;
@@ -170,7 +170,7 @@ static void test_degenerate_steps_stay_finite (void **state)
   int i;
   (void) state;
   add_static_box (w, 0, -0.5, 10, 1);
-  carom_body_def_init (&d);
+  carom_body_def_init (&d, sizeof d);
   d.y = 3;
   for (i = 0; i < 20; ++i)
     assert_status (i % 2 ? carom_world_add_circle (w, &d, 0.3, NULL) : carom_world_add_box (w, &d, 0.5, 0.5, NULL),
@@ -220,7 +220,7 @@ static carom_world *busy_scene (void)
   add_static_box (w, 0, -0.5, 20, 1);
   add_static_box (w, -10, 5, 1, 12);
   add_static_box (w, 10, 5, 1, 12);
-  carom_body_def_init (&d);
+  carom_body_def_init (&d, sizeof d);
   for (i = 0; i < 60; ++i)
     {
       d.x = -8 + (i % 12) * 1.4, d.y = 1 + (i / 12) * 1.3, d.angle = 0.1 * i, d.vx = (i % 5) - 2.0;
@@ -264,7 +264,7 @@ static void test_concave_interlock_stays_caught (void **state)
   double e0, ya, yb;
   int step;
   (void) state;
-  carom_body_def_init (&d);
+  carom_body_def_init (&d, sizeof d);
   d.vy = 1.0;
   assert_status (carom_world_add_polygon (w, &d, u, 8, &a), CAROM_OK);
   /* an upside-down U whose right arm hangs in the first U's notch */

@@ -2,6 +2,7 @@
 #include "support.h"
 
 #include <math.h>
+#include <string.h>
 
 static void test_init_destroy_and_null (void **state)
 {
@@ -11,7 +12,7 @@ static void test_init_destroy_and_null (void **state)
   carom_world_destroy (NULL); /* safe */
   assert_status (carom_world_init (NULL, NULL), CAROM_ERR_NULL_ARGUMENT);
   assert_status (carom_world_update (NULL, 0.1), CAROM_ERR_NULL_ARGUMENT);
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   assert_int_equal (def.size, sizeof def);
   assert_status (carom_world_init (&w, &def), CAROM_OK);
   assert_non_null (w);
@@ -28,20 +29,20 @@ static void test_bad_world_defs (void **state)
   carom_world *w = (carom_world *) 1;
   carom_world_def def;
   (void) state;
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   def.gravity_y = NAN;
   assert_status (carom_world_init (&w, &def), CAROM_ERR_NOT_FINITE);
   assert_null (w);
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   def.restitution = 1.01;
   assert_status (carom_world_init (&w, &def), CAROM_ERR_BAD_ARGUMENT);
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   def.substeps = 0;
   assert_status (carom_world_init (&w, &def), CAROM_ERR_BAD_ARGUMENT);
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   def.iterations = -3;
   assert_status (carom_world_init (&w, &def), CAROM_ERR_BAD_ARGUMENT);
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   def.size = 8;
   assert_status (carom_world_init (&w, &def), CAROM_ERR_BAD_STRUCT_SIZE);
   assert_null (w);
@@ -55,7 +56,7 @@ static void test_bad_time_step_changes_nothing (void **state)
   const double bad[] = {0.0, -0.01, NAN, INFINITY, -INFINITY};
   size_t i;
   double x, y, vx, vy;
-  carom_body_def_init (&def);
+  carom_body_def_init (&def, sizeof def);
   def.vx = 1.0;
   carom_world_set_gravity (w, 0, -10);
   assert_status (carom_world_add_circle (w, &def, 1.0, &id), CAROM_OK);
@@ -80,7 +81,7 @@ static void test_projectile_matches_closed_form (void **state)
   double x, y, vx, vy, angle;
   int step;
   carom_world_set_gravity (w, 0.0, g);
-  carom_body_def_init (&def);
+  carom_body_def_init (&def, sizeof def);
   def.x = 1.0, def.y = 2.0, def.vx = vx0, def.vy = vy0, def.spin = 0.5;
   assert_status (carom_world_add_regular (w, &def, 5, 0.3, &id), CAROM_OK);
   for (step = 1; step <= 300; ++step)
@@ -106,11 +107,11 @@ static void test_free_fall_with_substeps (void **state)
   double y;
   int step;
   (void) state;
-  carom_world_def_init (&def);
+  carom_world_def_init (&def, sizeof def);
   def.gravity_y = -9.81;
   def.substeps = 4;
   assert_status (carom_world_init (&w, &def), CAROM_OK);
-  carom_body_def_init (&bd);
+  carom_body_def_init (&bd, sizeof bd);
   bd.y = 100.0;
   assert_status (carom_world_add_box (w, &bd, 1, 1, &id), CAROM_OK);
   for (step = 0; step < 120; ++step)
@@ -166,11 +167,45 @@ static void test_get_bodies (void **state)
   assert_true (out[0] == ids[0]);
 }
 
+/* Versioned structs: def_init writes no byte past the size the caller gives,
+ * and refuses sizes it does not know (a newer caller's larger struct, or
+ * less than version 0.1's). */
+static void test_def_init_respects_the_callers_size (void **state)
+{
+  unsigned char buf[sizeof (carom_world_def) + 32];
+  carom_world_def def;
+  carom_body_def bd;
+  carom_world *w = NULL;
+  size_t i;
+  (void) state;
+  memset (buf, 0xAB, sizeof buf);
+  assert_status (carom_world_def_init ((carom_world_def *) (void *) buf, sizeof (carom_world_def)), CAROM_OK);
+  for (i = sizeof (carom_world_def); i < sizeof buf; ++i)
+    assert_int_equal (buf[i], 0xAB);
+  memset (buf, 0xAB, sizeof buf);
+  assert_status (carom_world_def_init ((carom_world_def *) (void *) buf, sizeof (carom_world_def) + 8),
+                 CAROM_ERR_BAD_STRUCT_SIZE);
+  for (i = 0; i < sizeof buf; ++i)
+    assert_int_equal (buf[i], 0xAB); /* refused: nothing written */
+  assert_status (carom_world_def_init (&def, 4), CAROM_ERR_BAD_STRUCT_SIZE);
+  assert_status (carom_world_def_init (NULL, sizeof def), CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_body_def_init (&bd, sizeof bd + 1), CAROM_ERR_BAD_STRUCT_SIZE);
+  assert_status (carom_body_def_init (&bd, sizeof bd), CAROM_OK);
+  assert_int_equal (bd.size, sizeof bd);
+  assert_true (bd.density == 1.0 && bd.restitution < 0.0);
+  /* a def claiming to be larger than this library's is refused by init */
+  assert_status (carom_world_def_init (&def, sizeof def), CAROM_OK);
+  def.size = sizeof def + 8;
+  assert_status (carom_world_init (&w, &def), CAROM_ERR_BAD_STRUCT_SIZE);
+  assert_null (w);
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test (test_init_destroy_and_null),
     cmocka_unit_test (test_bad_world_defs),
+    cmocka_unit_test (test_def_init_respects_the_callers_size),
     cmocka_unit_test_setup_teardown (test_bad_time_step_changes_nothing, world_setup, world_teardown),
     cmocka_unit_test_setup_teardown (test_projectile_matches_closed_form, world_setup, world_teardown),
     cmocka_unit_test (test_free_fall_with_substeps),

@@ -105,7 +105,7 @@ _ID = c_body_id
 PROTOTYPES = {
     "carom_version": (ctypes.c_uint32, []),
     "carom_status_string": (ctypes.c_char_p, [c_status]),
-    "carom_world_def_init": (None, [ctypes.c_void_p]),
+    "carom_world_def_init": (c_status, [ctypes.c_void_p, ctypes.c_uint32]),
     "carom_world_init": (c_status, [ctypes.POINTER(c_world_p), ctypes.POINTER(WorldDef)]),
     "carom_world_destroy": (None, [_W]),
     "carom_world_update": (c_status, [_W, _D]),
@@ -120,7 +120,7 @@ PROTOTYPES = {
         [_W, ctypes.c_int32, c_body_id_p, c_body_id_p,
          c_double_p, c_double_p, c_double_p, c_double_p, c_double_p],
     ),
-    "carom_body_def_init": (None, [ctypes.c_void_p]),
+    "carom_body_def_init": (c_status, [ctypes.c_void_p, ctypes.c_uint32]),
     "carom_world_add_circle": (c_status, [_W, ctypes.POINTER(BodyDef), _D, c_body_id_p]),
     "carom_world_add_box": (c_status, [_W, ctypes.POINTER(BodyDef), _D, _D, c_body_id_p]),
     "carom_world_add_regular": (
@@ -218,15 +218,6 @@ def _declare(lib):
                           % (lib._name, ", ".join(missing)))
 
 
-def _struct_size(init):
-    """The size a *_def_init of this library writes: it fills its own
-    sizeof, which a newer library may make larger than our struct, so it
-    writes into a spare buffer, never into ours."""
-    spare = ctypes.create_string_buffer(4096)
-    init(spare)
-    return ctypes.c_uint32.from_buffer(spare).value, spare
-
-
 lib, path = _load()
 _declare(lib)
 
@@ -237,21 +228,21 @@ if version_tuple[0] != EXPECTED_MAJOR:
         "carom: %s is version %d.%d.%d; this binding needs major version %d"
         % ((path,) + version_tuple + (EXPECTED_MAJOR,)))
 
-for _init, _cls in ((lib.carom_world_def_init, WorldDef), (lib.carom_body_def_init, BodyDef)):
-    _size, _ = _struct_size(_init)
-    if _size < ctypes.sizeof(_cls):
-        raise ImportError(
-            "carom: %s has a %d-byte %s, smaller than the %d bytes this binding "
-            "knows: the library is older than the binding"
-            % (path, _size, _cls.__name__, ctypes.sizeof(_cls)))
-
-
 def new_def(cls):
-    """A def filled with the library's defaults, its size set to ours (the
-    ABI rule: the caller states the size of the struct it passes)."""
+    """A def filled with the library's defaults for the struct as this binding
+    knows it: the binding passes its own size (the ABI rule), and a library
+    older than the binding, which cannot fill that much, refuses it."""
     init = lib.carom_world_def_init if cls is WorldDef else lib.carom_body_def_init
-    _, spare = _struct_size(init)
     d = cls()
-    ctypes.memmove(ctypes.addressof(d), spare, ctypes.sizeof(cls))
-    d.size = ctypes.sizeof(cls)
+    status = init(ctypes.byref(d), ctypes.sizeof(cls))
+    if status != 0:
+        raise ImportError("carom: %s refuses a %d-byte %s (%s): the library is "
+                          "older than this binding"
+                          % (path, ctypes.sizeof(cls), cls.__name__,
+                             lib.carom_status_string(status).decode()))
     return d
+
+
+# Fail at import, not at first use, when the library is older than the binding.
+new_def(WorldDef)
+new_def(BodyDef)

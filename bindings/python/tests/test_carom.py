@@ -38,10 +38,14 @@ def test_library_major_version_matches():
     (_native.lib.carom_body_def_init, _native.BodyDef),
 ])
 def test_struct_layouts_match_the_library(init, cls):
-    # def_init writes its own sizeof into `size`: the ctypes layout must have
-    # the same size (the C header and this binding describe the same struct).
-    size, _ = _native._struct_size(init)
-    assert size == ctypes.sizeof(cls)
+    # The library accepts exactly the sizes it knows: our layout's size must
+    # be one of them, and one byte more (a newer caller) is refused without
+    # writing past what we said.
+    buf = ctypes.create_string_buffer(ctypes.sizeof(cls) + 16)
+    assert init(buf, ctypes.sizeof(cls)) == 0
+    assert ctypes.c_uint32.from_buffer(buf).value == ctypes.sizeof(cls)
+    assert buf.raw[ctypes.sizeof(cls):] == b"\0" * 16
+    assert init(buf, ctypes.sizeof(cls) + 8) == 14  # CAROM_ERR_BAD_STRUCT_SIZE
 
 
 def test_struct_defaults_come_from_the_library():

@@ -148,7 +148,7 @@ extern "C" {
     pub fn carom_version() -> u32;
     pub fn carom_status_string(status: carom_status) -> *const c_char;
 
-    pub fn carom_world_def_init(def: *mut carom_world_def);
+    pub fn carom_world_def_init(def: *mut carom_world_def, size: u32) -> carom_status;
     pub fn carom_world_init(
         world: *mut *mut carom_world,
         def: *const carom_world_def,
@@ -182,7 +182,7 @@ extern "C" {
         depth: *mut f64,
     ) -> carom_status;
 
-    pub fn carom_body_def_init(def: *mut carom_body_def);
+    pub fn carom_body_def_init(def: *mut carom_body_def, size: u32) -> carom_status;
     pub fn carom_world_add_circle(
         world: *mut carom_world,
         def: *const carom_body_def,

@@ -62,28 +62,17 @@ pub fn version() -> (u32, u32, u32) {
     (v / 10000, v / 100 % 100, v % 100)
 }
 
-/// Room for a def_init of a newer library, whose struct may be larger: it
-/// writes its own sizeof, which must not overrun ours.
-#[repr(C)]
-struct Padded<T> {
-    value: T,
-    spare: [u8; 1024],
-}
-
-/// Fill a size-prefixed struct with the library's defaults, then state the
-/// size this crate knows (the ABI rule: the caller gives its own size).
-/// Returns the struct and the size the library itself reported.
-fn defaults<T: Copy>(init: unsafe extern "C" fn(*mut T)) -> (T, u32) {
-    let mut p = MaybeUninit::<Padded<T>>::zeroed();
+/// Fill a size-prefixed struct with the library's defaults, stating the
+/// size this crate knows (the ABI rule: the caller gives its own size; the
+/// library writes no byte past it). Returns the struct and the status: a
+/// library older than this crate refuses a size it does not know.
+fn defaults<T: Copy>(init: unsafe extern "C" fn(*mut T, u32) -> carom_status) -> (T, carom_status) {
+    let mut p = MaybeUninit::<T>::zeroed();
     // SAFETY: the buffer is zeroed (a valid value for these plain C structs,
-    // with None function pointers) and larger than any def the library has.
+    // with None function pointers) and exactly as large as we say.
     unsafe {
-        init(p.as_mut_ptr() as *mut T);
-        let mut value = p.assume_init().value;
-        let size_field = &mut value as *mut T as *mut u32;
-        let reported = *size_field;
-        *size_field = size_of::<T>() as u32;
-        (value, reported)
+        let status = init(p.as_mut_ptr(), size_of::<T>() as u32);
+        (p.assume_init(), status)
     }
 }
 
@@ -97,9 +86,10 @@ pub fn body_def() -> carom_body_def {
     defaults(carom_body_def_init).0
 }
 
-/// The sizes the library reports for (carom_world_def, carom_body_def): equal
-/// to this crate's `size_of` when the declarations match the library.
-pub fn library_def_sizes() -> (u32, u32) {
+/// The statuses the library gives for this crate's (carom_world_def,
+/// carom_body_def) sizes: CAROM_OK when the declarations match a size the
+/// library knows.
+pub fn library_accepts_def_sizes() -> (carom_status, carom_status) {
     (
         defaults(carom_world_def_init).1,
         defaults(carom_body_def_init).1,

@@ -8,10 +8,16 @@ use std::ptr;
 fn version_and_struct_sizes_match_the_library() {
     let (major, _, _) = safe::version();
     assert_eq!(major, CAROM_VERSION_MAJOR);
-    // def_init writes the library's own sizeof: our #[repr(C)] copies agree.
-    let (world_size, body_size) = safe::library_def_sizes();
-    assert_eq!(world_size as usize, size_of::<carom_world_def>());
-    assert_eq!(body_size as usize, size_of::<carom_body_def>());
+    // The library accepts our #[repr(C)] sizes, and writes them to `size`.
+    assert_eq!(safe::library_accepts_def_sizes(), (CAROM_OK, CAROM_OK));
+    assert_eq!(safe::world_def().size as usize, size_of::<carom_world_def>());
+    assert_eq!(safe::body_def().size as usize, size_of::<carom_body_def>());
+    // One byte more than the library knows is refused.
+    let mut big = [0u8; 512];
+    let st = unsafe {
+        carom_world_def_init(big.as_mut_ptr() as *mut carom_world_def, size_of::<carom_world_def>() as u32 + 8)
+    };
+    assert_eq!(st, CAROM_ERR_BAD_STRUCT_SIZE);
     assert_eq!(safe::body_def().density, 1.0);
     assert_eq!(safe::world_def().iterations, 8);
 }
