@@ -334,6 +334,85 @@ CAROM_API carom_status carom_body_get_vertices (const carom_world *world,
                                                 int32_t capacity,
                                                 int32_t *count);
 
+/* ---------------------------------------------------------------- effects */
+
+/**
+ * The stages of a world's update beyond the core (detect, solve, drift).
+ * Each is off until asked for, and costs nothing per body or contact while
+ * off. carom_world_get_effects reports the active ones as a bit set.
+ */
+typedef enum carom_effect {
+  CAROM_EFFECT_GRAVITY = 1 << 0,         /**< uniform gravity is not (0, 0) */
+  CAROM_EFFECT_CENTRAL_GRAVITY = 1 << 1, /**< attraction to a point mass */
+  CAROM_EFFECT_RESTITUTION = 1 << 2,     /**< some contact can bounce (e > 0) */
+  CAROM_EFFECT_FRICTION = 1 << 3,        /**< some contact has mu > 0 */
+  CAROM_EFFECT_FIXED_ROTATION = 1 << 4,  /**< some body is non-rotating */
+  CAROM_EFFECT_DAMPING = 1 << 5,         /**< linear or angular damping */
+  CAROM_EFFECT_SLEEPING = 1 << 6,        /**< bodies at rest are put to sleep */
+  CAROM_EFFECT_FORCE_32 = 0x7fffffff
+} carom_effect;
+
+/** The active effects, a bit set of carom_effect (0 for NULL). */
+CAROM_API uint32_t carom_world_get_effects (const carom_world *world);
+
+/** Name of one effect ("gravity", "central-gravity", "restitution",
+ * "friction", "fixed-rotation", "damping", "sleeping"), or NULL. */
+CAROM_API const char *carom_effect_name (carom_effect effect);
+
+/** Default restitution e in [0, 1] and friction mu >= 0 for bodies that
+ * have none of their own. Errors: NULL_ARGUMENT, NOT_FINITE, BAD_ARGUMENT. */
+CAROM_API carom_status carom_world_set_restitution (carom_world *world,
+                                                    double restitution);
+CAROM_API carom_status carom_world_set_friction (carom_world *world,
+                                                 double friction);
+
+/**
+ * Newtonian attraction of every dynamic body towards a fixed point mass at
+ * (x, y): acceleration gm / (r^2 + softening^2) toward it, with
+ * r the distance to the body's centre of mass (the original flying-balls'
+ * gravity.c). gm = 0 switches it off. Errors: NULL_ARGUMENT, NOT_FINITE,
+ * BAD_ARGUMENT (gm or softening negative).
+ */
+CAROM_API carom_status carom_world_set_central_gravity (carom_world *world,
+                                                        double x, double y,
+                                                        double gm,
+                                                        double softening);
+
+/**
+ * Damping: velocities decay as exp(-linear t) and spins as exp(-angular t),
+ * exactly at every step. (0, 0) switches it off. Errors: NULL_ARGUMENT,
+ * NOT_FINITE, BAD_ARGUMENT (negative).
+ */
+CAROM_API carom_status carom_world_set_damping (carom_world *world,
+                                                double linear, double angular);
+
+/**
+ * Sleeping: a body slower than 5% of its size per second (and 0.035 rad/s)
+ * for half a second stops being simulated until something touches it
+ * faster than that, the API moves it, or carom_body_wake is called. Sleeping
+ * bodies report zero velocity and take part in no contact. enabled = 0
+ * switches it off and wakes everything. Errors: NULL_ARGUMENT.
+ */
+CAROM_API carom_status carom_world_set_sleeping (carom_world *world,
+                                                 int32_t enabled);
+
+/** Whether a body is awake (1) or asleep (0). */
+CAROM_API carom_status carom_body_is_awake (const carom_world *world,
+                                            carom_body_id id,
+                                            int32_t *awake);
+
+/** Wake a sleeping body (no effect on an awake one). */
+CAROM_API carom_status carom_body_wake (carom_world *world, carom_body_id id);
+
+/**
+ * Make a body non-rotating (infinite inertia: contacts never spin it, its
+ * spin is set to 0) or rotating again. Errors: NULL_ARGUMENT, STALE_BODY,
+ * STATIC_BODY.
+ */
+CAROM_API carom_status carom_body_set_fixed_rotation (carom_world *world,
+                                                      carom_body_id id,
+                                                      int32_t fixed);
+
 /* ----------------------------------------------------------------- scenes */
 
 /** Where and why a scene failed to load. */

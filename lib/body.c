@@ -43,6 +43,25 @@ body *body_lookup (const carom_world *world, carom_body_id id)
   return b;
 }
 
+void body_sleep (body *b)
+{
+  b->asleep = 1;
+  b->v = v2 (0.0, 0.0);
+  b->w = 0.0;
+  b->inv_mass = 0.0;
+  b->inv_inertia = 0.0;
+}
+
+void body_wake (body *b)
+{
+  b->sleep_time = 0.0;
+  if (!b->asleep)
+    return;
+  b->asleep = 0;
+  b->inv_mass = 1.0 / b->mass;
+  b->inv_inertia = b->fixed_rotation ? 0.0 : 1.0 / b->inertia;
+}
+
 void body_sync (body *b)
 {
   b->q = rot2_from_angle (b->angle);
@@ -275,7 +294,7 @@ carom_status carom_world_remove_body (carom_world *world, carom_body_id id)
   if (!b)
     return CAROM_ERR_STALE_BODY;
   slot = (int32_t) (b - world->bodies);
-  contacts_forget_body (world, slot);
+  contacts_forget_body (world, slot); /* also wakes the bodies it touched */
   shape_destroy (&b->shape, &world->allocator);
   b->alive = 0;
   b->generation = b->generation == UINT32_MAX ? 1 : b->generation + 1;
@@ -341,6 +360,7 @@ carom_status carom_body_set_position (carom_world *world, carom_body_id id, doub
   if (!is_finite (x) || !is_finite (y))
     return CAROM_ERR_NOT_FINITE;
   b->p = v2 (x, y);
+  body_wake (b);
   body_sync (b);
   return CAROM_OK;
 }
@@ -361,6 +381,7 @@ carom_status carom_body_set_angle (carom_world *world, carom_body_id id, double 
   if (!is_finite (angle))
     return CAROM_ERR_NOT_FINITE;
   b->angle = angle;
+  body_wake (b);
   body_sync (b);
   return CAROM_OK;
 }
@@ -384,6 +405,7 @@ carom_status carom_body_set_velocity (carom_world *world, carom_body_id id, doub
     return CAROM_ERR_NOT_FINITE;
   if (b->type == CAROM_STATIC)
     return CAROM_ERR_STATIC_BODY;
+  body_wake (b);
   b->v = v2 (vx, vy);
   return CAROM_OK;
 }
@@ -397,6 +419,36 @@ carom_status carom_body_get_spin (const carom_world *world, carom_body_id id, do
   return CAROM_OK;
 }
 
+carom_status carom_body_is_awake (const carom_world *world, carom_body_id id, int32_t *awake)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (awake)
+    *awake = !b->asleep;
+  return CAROM_OK;
+}
+
+carom_status carom_body_wake (carom_world *world, carom_body_id id)
+{
+  body *b;
+  LOOKUP (world, id, b);
+  body_wake (b);
+  return CAROM_OK;
+}
+
+carom_status carom_body_set_fixed_rotation (carom_world *world, carom_body_id id, int32_t fixed)
+{
+  body *b;
+  LOOKUP (world, id, b);
+  if (b->type == CAROM_STATIC)
+    return CAROM_ERR_STATIC_BODY;
+  body_wake (b);
+  b->fixed_rotation = fixed != 0;
+  b->w = fixed ? 0.0 : b->w;
+  b->inv_inertia = fixed ? 0.0 : 1.0 / b->inertia;
+  return CAROM_OK;
+}
+
 carom_status carom_body_set_spin (carom_world *world, carom_body_id id, double spin)
 {
   body *b;
@@ -405,6 +457,9 @@ carom_status carom_body_set_spin (carom_world *world, carom_body_id id, double s
     return CAROM_ERR_NOT_FINITE;
   if (b->type == CAROM_STATIC)
     return CAROM_ERR_STATIC_BODY;
+  if (b->fixed_rotation && spin != 0.0)
+    return CAROM_ERR_BAD_ARGUMENT; /* a non-rotating body never rotates */
+  body_wake (b);
   b->w = spin;
   return CAROM_OK;
 }

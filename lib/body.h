@@ -27,6 +27,9 @@ typedef struct body {
   vec2 pv;
   double pw;
   int32_t touching; /* had a contact this sub-step (set by the solver) */
+  int32_t fixed_rotation; /* non-rotating: inv_inertia stays 0 */
+  int32_t asleep;         /* sleeping: zero inverse mass, not moved */
+  double sleep_time;      /* how long it has been slow enough to sleep */
 } body;
 
 struct carom_world;
@@ -43,6 +46,11 @@ static inline double body_reach (const body *b, double h)
 {
   return h * (v2_len (b->v) + fabs (b->w) * b->shape.bound_radius);
 }
+
+/* Sleep and wake: a sleeping body keeps its mass but acts as static (zero
+ * inverse mass) and does not move; waking restores its inverses. */
+void body_sleep (body *b);
+void body_wake (body *b);
 
 /* Refresh the rotation cache and bounding box after a move. */
 void body_sync (body *b);

@@ -150,6 +150,10 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
     }
   A = &world->bodies[a];
   B = &world->bodies[b];
+  /* neither can move (a sleeping body against a static or sleeping one):
+   * nothing to detect or solve */
+  if (A->inv_mass == 0.0 && B->inv_mass == 0.0)
+    return;
   /* combining rule: the bouncier body wins (max); friction is the
    * geometric mean */
   ea = material (A->restitution, world->def.restitution);
@@ -242,6 +246,10 @@ void contacts_forget_body (carom_world *world, int32_t slot)
 {
   contacts *c = &world->contacts;
   int32_t i, points = 0;
+  /* what rested on it must fall: wake what it touched */
+  for (i = 0; i < c->count; ++i)
+    if (c->list[i].a == slot || c->list[i].b == slot)
+      body_wake (&world->bodies[c->list[i].a == slot ? c->list[i].b : c->list[i].a]);
   forget_in (c->list, &c->count, slot);
   forget_in (c->old, &c->old_count, slot);
   for (i = 0; i < c->count; ++i)

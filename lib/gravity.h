@@ -5,7 +5,8 @@
 
 struct carom_world;
 
-/* v += g * h for every dynamic body; nothing at all when g is zero. */
+/* v += g * h for every dynamic body, plus the central attraction when it
+ * is on; nothing at all when both are off. */
 void gravity_update (struct carom_world *world, double h);
 
 #endif

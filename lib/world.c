@@ -1,12 +1,15 @@
 /* The world and its update pipeline, in the flying-balls lifecycle:
- * init, update (per sub-step: detect, gravity, solve, drift),
+ * init, update (per sub-step: detect, wake, gravity, damping, solve, drift,
+ * sleep),
  * destroy. */
 #include "world.h"
 
 #include <string.h>
 
+#include "damping.h"
 #include "def.h"
 #include "gravity.h"
+#include "sleep.h"
 #include "solver.h"
 
 static carom_status check_def (const carom_world_def *def)
@@ -78,7 +81,7 @@ static void drift (carom_world *world, double h)
     {
       body *b = &world->bodies[i];
       vec2 v;
-      if (!b->alive || b->type == CAROM_STATIC)
+      if (!b->alive || b->type == CAROM_STATIC || b->asleep)
         continue;
       v = b->touching ? b->v : v2_sub (b->v, half_kick);
       b->p = v2_mad (b->p, h, v2_add (v, b->pv));
@@ -98,9 +101,12 @@ static carom_status substep (carom_world *world, double h)
   world->step_h = 0.0;
   if (st != CAROM_OK)
     return st;
+  sleep_wake_touched (world);
   gravity_update (world, h);
+  damping_update (world, h);
   solver_update (world, h);
   drift (world, h);
+  sleep_update (world, h);
   return CAROM_OK;
 }
 

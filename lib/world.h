@@ -22,6 +22,15 @@ struct carom_world {
 
   broadphase broad;
   contacts contacts;
+
+  /* effects beyond uniform gravity, each off until set (effects.c) */
+  struct {
+    int active;
+    vec2 center;
+    double gm, softening2;
+  } central;
+  double damping_linear, damping_angular;
+  int sleeping;
 };
 
 #endif
