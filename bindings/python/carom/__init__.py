@@ -260,6 +260,34 @@ class World:
         gx, gy = _pair(value, "gravity")
         _check(_lib.carom_world_set_gravity(self._handle(), gx, gy), "gravity")
 
+    @property
+    def effects(self):
+        """Names of the active effect stages, e.g. ['gravity', 'friction']."""
+        mask = _lib.carom_world_get_effects(self._handle())
+        return [_lib.carom_effect_name(1 << i).decode() for i in range(31)
+                if mask & (1 << i) and _lib.carom_effect_name(1 << i)]
+
+    def set_restitution(self, e):
+        """World default restitution e in [0, 1]."""
+        _check(_lib.carom_world_set_restitution(self._handle(), _finite(e, "restitution")), "restitution")
+
+    def set_friction(self, mu):
+        """World default friction mu >= 0."""
+        _check(_lib.carom_world_set_friction(self._handle(), _finite(mu, "friction")), "friction")
+
+    def set_central_gravity(self, x, y, gm, softening=0.0):
+        """Attraction to a point mass at (x, y); gm = 0 switches it off."""
+        _check(_lib.carom_world_set_central_gravity(self._handle(), x, y, gm, softening),
+               "central gravity")
+
+    def set_damping(self, linear, angular=0.0):
+        """Velocities decay as exp(-linear t), spins as exp(-angular t)."""
+        _check(_lib.carom_world_set_damping(self._handle(), linear, angular), "damping")
+
+    def set_sleeping(self, enabled):
+        """Put bodies at rest to sleep (True) or wake everything (False)."""
+        _check(_lib.carom_world_set_sleeping(self._handle(), 1 if enabled else 0), "sleeping")
+
     def __len__(self):
         return _lib.carom_world_body_count(self._handle())
 
@@ -399,6 +427,21 @@ class Body:
     def remove(self):
         """Remove the body from its world; the handle becomes stale."""
         _check(_lib.carom_world_remove_body(self._h(), self._id), "remove")
+
+    @property
+    def awake(self):
+        """False while the body sleeps."""
+        v = ctypes.c_int32()
+        _check(_lib.carom_body_is_awake(self._h(), self._id, ctypes.byref(v)), "awake")
+        return bool(v.value)
+
+    def wake(self):
+        _check(_lib.carom_body_wake(self._h(), self._id), "wake")
+
+    def set_fixed_rotation(self, fixed=True):
+        """Make the body non-rotating (True) or rotating again (False)."""
+        _check(_lib.carom_body_set_fixed_rotation(self._h(), self._id, 1 if fixed else 0),
+               "fixed rotation")
 
     @property
     def position(self):

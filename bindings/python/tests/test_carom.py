@@ -333,3 +333,20 @@ def test_missing_scene_file_raises_io(tmp_path):
     with pytest.raises(carom.CaromError) as e:
         carom.World.from_scene(tmp_path / "missing.scene")
     assert e.value.status == carom.Status.IO
+
+
+def test_effects_switch_on_by_use_and_damping_is_exact():
+    with carom.World() as w:
+        assert w.effects == []
+        b = w.add_box(1, 1, vx=2.0)
+        w.set_damping(0.5)
+        w.gravity = (0, -1)
+        assert set(w.effects) == {"gravity", "damping"}
+        w.gravity = (0, 0)
+        for _ in range(60):
+            w.step(1 / 60)
+        assert b.velocity[0] == pytest.approx(2.0 * math.exp(-0.5), rel=1e-12)
+        b.set_fixed_rotation()
+        assert "fixed-rotation" in w.effects
+        with pytest.raises(carom.CaromError):
+            w.set_damping(-1)

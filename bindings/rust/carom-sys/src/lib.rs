@@ -211,6 +211,16 @@ extern "C" {
         id: *mut carom_body_id,
     ) -> carom_status;
     pub fn carom_world_remove_body(world: *mut carom_world, id: carom_body_id) -> carom_status;
+    pub fn carom_world_get_effects(world: *const carom_world) -> u32;
+    pub fn carom_effect_name(effect: c_int) -> *const c_char;
+    pub fn carom_world_set_restitution(world: *mut carom_world, restitution: f64) -> carom_status;
+    pub fn carom_world_set_friction(world: *mut carom_world, friction: f64) -> carom_status;
+    pub fn carom_world_set_central_gravity(world: *mut carom_world, x: f64, y: f64, gm: f64, softening: f64) -> carom_status;
+    pub fn carom_world_set_damping(world: *mut carom_world, linear: f64, angular: f64) -> carom_status;
+    pub fn carom_world_set_sleeping(world: *mut carom_world, enabled: i32) -> carom_status;
+    pub fn carom_body_is_awake(world: *const carom_world, id: carom_body_id, awake: *mut i32) -> carom_status;
+    pub fn carom_body_wake(world: *mut carom_world, id: carom_body_id) -> carom_status;
+    pub fn carom_body_set_fixed_rotation(world: *mut carom_world, id: carom_body_id, fixed: i32) -> carom_status;
     pub fn carom_body_check(world: *const carom_world, id: carom_body_id) -> carom_status;
 
     pub fn carom_body_get_position(
