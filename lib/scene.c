@@ -28,10 +28,11 @@ enum {
   OPT_DENSITY = 1u << 4,
   OPT_RESTITUTION = 1u << 5,
   OPT_FRICTION = 1u << 6,
-  OPT_STATIC = 1u << 7
+  OPT_STATIC = 1u << 7,
+  OPT_FIXED = 1u << 8
 };
 #define OPT_MATERIAL (OPT_RESTITUTION | OPT_FRICTION)
-#define OPT_BODY (OPT_AT | OPT_ANGLE | OPT_VELOCITY | OPT_SPIN | OPT_DENSITY | OPT_MATERIAL | OPT_STATIC)
+#define OPT_BODY (OPT_AT | OPT_ANGLE | OPT_VELOCITY | OPT_SPIN | OPT_DENSITY | OPT_MATERIAL | OPT_STATIC | OPT_FIXED)
 
 typedef struct scene_option {
   const char *word;
@@ -48,6 +49,7 @@ static const scene_option scene_options[] = {
   { "restitution", 1, OPT_RESTITUTION },
   { "friction", 1, OPT_FRICTION },
   { "static", 0, OPT_STATIC },
+  { "fixed", 0, OPT_FIXED },
 };
 
 typedef struct scene_parser {
@@ -69,6 +71,14 @@ typedef struct scene_parser {
   int32_t num_count, num_cap;
   unsigned opts;             /* options given */
   carom_body_def body;       /* options applied to the defaults */
+  carom_body_id last;        /* the body the line added */
+
+  /* effects set by statements, applied once the world exists */
+  double central[4];         /* x, y, gm, softening */
+  double damping[2];
+  int sleeping;
+  uint32_t named_effects;    /* named by `effects`: must end up active */
+  int32_t effects_line;
 } scene_parser;
 
 /* When a statement's handler runs: settings fill p->def in the first pass
@@ -300,6 +310,8 @@ static carom_status scene_do_iterations (scene_parser *p)
 /* Name the line's body in an error from the world (second pass only). */
 static carom_status scene_added (scene_parser *p, carom_status s)
 {
+  if (s == CAROM_OK && (p->opts & OPT_FIXED))
+    s = carom_body_set_fixed_rotation (p->world, p->last, 1);
   if (s == CAROM_OK)
     return s;
   return scene_fail (p, s, "%s: %s", p->tok[0], carom_status_string (s));
@@ -342,7 +354,7 @@ static carom_status scene_do_circle (scene_parser *p)
   carom_status s = scene_positive (p, p->num[0], "radius R", CAROM_ERR_BAD_SIZE);
   if (s != CAROM_OK || !p->world)
     return s;
-  return scene_added (p, carom_world_add_circle (p->world, &p->body, p->num[0], NULL));
+  return scene_added (p, carom_world_add_circle (p->world, &p->body, p->num[0], &p->last));
 }
 
 static carom_status scene_do_box (scene_parser *p)
@@ -352,7 +364,7 @@ static carom_status scene_do_box (scene_parser *p)
     s = scene_positive (p, p->num[1], "height H", CAROM_ERR_BAD_SIZE);
   if (s != CAROM_OK || !p->world)
     return s;
-  return scene_added (p, carom_world_add_box (p->world, &p->body, p->num[0], p->num[1], NULL));
+  return scene_added (p, carom_world_add_box (p->world, &p->body, p->num[0], p->num[1], &p->last));
 }
 
 static carom_status scene_do_regular (scene_parser *p)
@@ -367,7 +379,7 @@ static carom_status scene_do_regular (scene_parser *p)
     s = scene_positive (p, p->num[1], "side length", CAROM_ERR_BAD_SIZE);
   if (s != CAROM_OK || !p->world)
     return s;
-  return scene_added (p, carom_world_add_regular (p->world, &p->body, n, p->num[1], NULL));
+  return scene_added (p, carom_world_add_regular (p->world, &p->body, n, p->num[1], &p->last));
 }
 
 static carom_status scene_do_polygon (scene_parser *p)
@@ -390,7 +402,80 @@ static carom_status scene_do_polygon (scene_parser *p)
         return scene_fail (p, s, "polygon: %s", carom_status_string (s));
       return CAROM_OK;
     }
-  return scene_added (p, carom_world_add_polygon (p->world, &p->body, p->num, n, NULL));
+  return scene_added (p, carom_world_add_polygon (p->world, &p->body, p->num, n, &p->last));
+}
+
+static carom_status scene_do_central (scene_parser *p)
+{
+  p->central[0] = p->num[0];
+  p->central[1] = p->num[1];
+  p->central[2] = p->num[2];
+  p->central[3] = p->num_count > 3 ? p->num[3] : 0.0;
+  if (p->central[2] < 0.0 || p->central[3] < 0.0)
+    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "central: GM and SOFTENING must be 0 or more");
+  return CAROM_OK;
+}
+
+static carom_status scene_do_damping (scene_parser *p)
+{
+  p->damping[0] = p->num[0];
+  p->damping[1] = p->num_count > 1 ? p->num[1] : 0.0;
+  if (p->damping[0] < 0.0 || p->damping[1] < 0.0)
+    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "damping: rates must be 0 or more");
+  return CAROM_OK;
+}
+
+/* `effects NAME...`: sleeping, which has no parameter, is switched on by
+ * naming it; every other named effect must be made active by the scene's
+ * other lines, or the scene is rejected at this line. */
+static carom_status scene_do_effects (scene_parser *p)
+{
+  int32_t i;
+  if (p->tok_count < 2)
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "effects: name at least one effect (usage: effects NAME...)");
+  for (i = 1; i < p->tok_count; ++i)
+    {
+      uint32_t bit;
+      for (bit = 1; bit && !(carom_effect_name ((carom_effect) bit)
+                             && strcmp (carom_effect_name ((carom_effect) bit), p->tok[i]) == 0);
+           bit <<= 1)
+        ;
+      if (!bit)
+        return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "effects: unknown effect '%s'", p->tok[i]);
+      if (bit == CAROM_EFFECT_SLEEPING)
+        p->sleeping = 1;
+      p->named_effects |= bit;
+    }
+  p->effects_line = p->line;
+  return CAROM_OK;
+}
+
+/* Once the world exists: the effects whose settings are not in the def. */
+static carom_status scene_apply_effects (scene_parser *p)
+{
+  carom_status s = CAROM_OK;
+  if (p->central[2] > 0.0)
+    s = carom_world_set_central_gravity (p->world, p->central[0], p->central[1], p->central[2], p->central[3]);
+  if (s == CAROM_OK && (p->damping[0] > 0.0 || p->damping[1] > 0.0))
+    s = carom_world_set_damping (p->world, p->damping[0], p->damping[1]);
+  if (s == CAROM_OK && p->sleeping)
+    s = carom_world_set_sleeping (p->world, 1);
+  if (s != CAROM_OK)
+    return scene_fail (p, s, "an effect was rejected: %s", carom_status_string (s));
+  return CAROM_OK;
+}
+
+/* After the bodies: every effect named by `effects` is in use. */
+static carom_status scene_check_named_effects (scene_parser *p)
+{
+  uint32_t missing = p->named_effects & ~carom_world_get_effects (p->world), bit;
+  if (!missing)
+    return CAROM_OK;
+  for (bit = 1; !(missing & bit); bit <<= 1)
+    ;
+  p->line = p->effects_line;
+  return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "effects: '%s' is named but nothing in the scene uses it",
+                     carom_effect_name ((carom_effect) bit));
 }
 
 /* The statement table: a new statement is one row here plus its handler. */
@@ -400,6 +485,9 @@ static const scene_statement scene_statements[] = {
   { "friction", SCENE_SETTING, 1, 1, 0, 0, "friction MU", scene_do_friction },
   { "substeps", SCENE_SETTING, 1, 1, 0, 0, "substeps K", scene_do_substeps },
   { "iterations", SCENE_SETTING, 1, 1, 0, 0, "iterations N", scene_do_iterations },
+  { "central", SCENE_SETTING, 3, 4, 0, 0, "central X Y GM [SOFTENING]", scene_do_central },
+  { "damping", SCENE_SETTING, 1, 2, 0, 0, "damping LINEAR [ANGULAR]", scene_do_damping },
+  { "effects", SCENE_SETTING, 0, 0, 0, 1, "effects NAME...", scene_do_effects },
   { "bounds", SCENE_BODY, 4, 4, OPT_MATERIAL, 0, "bounds X0 Y0 X1 Y1 [restitution E] [friction MU]", scene_do_bounds },
   { "circle", SCENE_BODY, 1, 1, OPT_BODY, 0, "circle R [options]", scene_do_circle },
   { "box", SCENE_BODY, 2, 2, OPT_BODY, 0, "box W H [options]", scene_do_box },
@@ -450,6 +538,7 @@ static carom_status scene_apply_option (scene_parser *p, const scene_option *opt
       b->friction = v[0];
       break;
     case OPT_STATIC: b->type = CAROM_STATIC; break;
+    case OPT_FIXED: break; /* applied once the body exists */
     }
   return s;
 }
@@ -511,8 +600,11 @@ static carom_status scene_arguments (scene_parser *p, const scene_statement *st)
       if (s != CAROM_OK)
         return s;
     }
-  if (p->body.type == CAROM_STATIC && (p->opts & (OPT_VELOCITY | OPT_SPIN)))
-    return scene_fail (p, CAROM_ERR_STATIC_BODY, "%s: a static body cannot have a velocity or spin", st->word);
+  if (p->body.type == CAROM_STATIC && (p->opts & (OPT_VELOCITY | OPT_SPIN | OPT_FIXED)))
+    return scene_fail (p, CAROM_ERR_STATIC_BODY, "%s: a static body cannot have a velocity, spin or 'fixed'",
+                       st->word);
+  if ((p->opts & OPT_FIXED) && p->body.spin != 0.0)
+    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "%s: a 'fixed' (non-rotating) body cannot spin", st->word);
   return CAROM_OK;
 }
 
@@ -672,7 +764,11 @@ carom_status carom_scene_load_text (carom_world **world, const char *text, size_
         scene_fail (&p, s, "the world settings were rejected: %s", carom_status_string (s));
     }
   if (s == CAROM_OK)
+    s = scene_apply_effects (&p);
+  if (s == CAROM_OK)
     s = scene_pass (&p, text, length);
+  if (s == CAROM_OK)
+    s = scene_check_named_effects (&p);
   if (s == CAROM_OK)
     {
       *world = p.world;
@@ -699,7 +795,7 @@ carom_status carom_scene_load_file (carom_world **world, const char *path, const
   if (s == CAROM_OK && (!world || !path))
     s = scene_fail (&p, CAROM_ERR_NULL_ARGUMENT, "%s is NULL", world ? "path" : "world");
   if (s == CAROM_OK && !(f = fopen (path, "rb")))
-    s = scene_fail (&p, CAROM_ERR_IO, "cannot open: %s", strerror (errno));
+    s = scene_fail (&p, CAROM_ERR_IO, "cannot open %s: %s", path, strerror (errno));
   while (s == CAROM_OK)
     {
       size_t got;

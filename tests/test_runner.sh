@@ -63,7 +63,8 @@ if run 0 run "$tmp/small.scene" --steps 30; then
   done
   check "every key has a value (missing:${missing:- none})" test -z "$missing"
   check "bodies=7 steps=30" sh -c 'case "$1" in *"bodies=7 "*"steps=30 "*) exit 0;; esac; exit 1' - "$line"
-  check "nan=0" sh -c 'case "$1" in *" nan=0") exit 0;; esac; exit 1' - "$line"
+  check "nan=0" sh -c 'case "$1" in *" nan=0 "*) exit 0;; esac; exit 1' - "$line"
+  check "effects listed" sh -c 'case "$1" in *" effects="*) exit 0;; esac; exit 1' - "$line"
   check "dt defaults to 1/60" sh -c 'case "$1" in *" dt=0.01666666666666666"*) exit 0;; esac; exit 1' - "$line"
 else
   not_ok "run exits 0"

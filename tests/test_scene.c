@@ -283,6 +283,16 @@ static const bad_case bad_cases[] = {
   { "polygon 0 0 1 0 1 0 0 1\n", 1, CAROM_ERR_REPEATED_VERTEX },
   { "polygon 0 0 1 1 2 2\n", 1, CAROM_ERR_ZERO_AREA },
   { "circle 1 static velocity 1 0\n", 1, CAROM_ERR_STATIC_BODY },
+  { "circle 1 static fixed\n", 1, CAROM_ERR_STATIC_BODY },
+  { "circle 1 fixed spin 2\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "central 0 0 -5\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "central 0 0\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "damping -0.1\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "damping 1 2 3\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "effects\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "effects gravity warp\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  /* a named effect nothing uses is reported at the effects line */
+  { "gravity 0 -10\neffects gravity friction\nbox 1 1\n", 2, CAROM_ERR_BAD_ARGUMENT },
   /* errors after good bodies, and a later line's error after good lines */
   { "circle 1\r\nbox 1 1\r\n# c\r\nbox 1 1 at 0 zero\r\n", 4, CAROM_ERR_SCENE_SYNTAX },
   { "polygon 0 0 1 0 0 1 at 1 1\nregular 6 1\ncircle 1 density -2\n", 3, CAROM_ERR_BAD_DENSITY },
@@ -511,9 +521,34 @@ static void test_file_errors (void **state)
   assert_int_equal (err.line, 0);
   assert_int_equal (err.cause, CAROM_ERR_IO);
   assert_non_null (strstr (err.message, "No such file"));
+  assert_non_null (strstr (err.message, "scenes/no-such-file.scene")); /* names the file */
   /* a directory opens but cannot be read */
   assert_status (carom_scene_load_file (&w, "scenes", NULL, &err), CAROM_ERR_IO);
   assert_null (w);
+}
+
+/* Effects: switched on by the lines that use them, or named. */
+static void test_effects_statements (void **state)
+{
+  carom_world *w = load ("central 1 2 50 0.1\ndamping 0.5 0.25\neffects sleeping central-gravity fixed-rotation\n"
+                         "box 1 1 at 3 0 fixed\ncircle 0.5 at -3 0\n");
+  uint32_t e;
+  int32_t awake = -1;
+  double angle;
+  carom_body_id box;
+  int i;
+  (void) state;
+  e = carom_world_get_effects (w);
+  assert_int_equal (e, CAROM_EFFECT_CENTRAL_GRAVITY | CAROM_EFFECT_DAMPING | CAROM_EFFECT_SLEEPING
+                           | CAROM_EFFECT_FIXED_ROTATION);
+  box = body_at (w, 0);
+  for (i = 0; i < 60; ++i)
+    carom_world_update (w, 1.0 / 60);
+  carom_body_get_angle (w, box, &angle);
+  assert_true (angle == 0.0);
+  assert_status (carom_body_is_awake (w, box, &awake), CAROM_OK);
+  assert_int_equal (awake, 1); /* falling towards the centre: not at rest */
+  carom_world_destroy (w);
 }
 
 /* Every shipped scene loads, with the body count it promises. */
@@ -582,6 +617,7 @@ int main (void)
     cmocka_unit_test (test_allocator_and_out_of_memory),
     cmocka_unit_test (test_locale_independent),
     cmocka_unit_test (test_file_errors),
+    cmocka_unit_test (test_effects_statements),
     cmocka_unit_test (test_shipped_scenes),
     cmocka_unit_test (test_gas_starts_apart),
   };
