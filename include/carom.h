@@ -153,8 +153,9 @@ CAROM_API void carom_world_destroy (carom_world *world);
 /**
  * Advance the world by `dt` (time units, > 0 and finite): forces, collision
  * detection, collision resolution, integration, in `substeps` sub-steps.
- * Errors: NULL_ARGUMENT, BAD_TIME_STEP, OUT_OF_MEMORY; the world is unchanged
- * on error.
+ * Errors: NULL_ARGUMENT and BAD_TIME_STEP change nothing. OUT_OF_MEMORY
+ * leaves the world valid and usable: the sub-step that failed changed no
+ * body, but sub-steps completed before it (with substeps > 1) remain.
  */
 CAROM_API carom_status carom_world_update (carom_world *world, double dt);
 

@@ -12,6 +12,8 @@ typedef struct contact_point {
   uint32_t feature;
   /* solver data */
   vec2 ra, rb;          /* from each centre of mass to the point */
+  double rn_a, rn_b;    /* ra x n, rb x n */
+  double rt_a, rt_b;    /* ra x t, rb x t, t the tangent */
   double normal_mass;   /* 1 / (denominator of eq. 3.23) */
   double tangent_mass;
   double target;        /* normal relative velocity to reach (restitution) */
@@ -25,6 +27,8 @@ typedef struct contact {
   double restitution, friction;
   double slop;                /* overlap left alone, from the bodies' sizes */
   int32_t first_point;        /* index of points[0] among all points */
+  int32_t block;              /* two points solved as one 2x2 problem */
+  double k11, k12, k22, det;  /* its matrix, set by the solver's prepare */
   int32_t count;
   contact_point points[MANIFOLD_MAX_POINTS];
 } contact;

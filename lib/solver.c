@@ -24,32 +24,68 @@
 
 #include "world.h"
 
-static void apply_impulse (body *a, body *b, const contact_point *p, vec2 impulse)
+/* The solver works on a compact copy of what it reads and writes per body
+ * (64 bytes instead of the whole body), gathered before and scattered
+ * after: the iterations touch each body many times. */
+static void gather (carom_world *world)
 {
-  a->v = v2_mad (a->v, -a->inv_mass, impulse);
-  a->w -= a->inv_inertia * v2_cross (p->ra, impulse);
-  b->v = v2_mad (b->v, b->inv_mass, impulse);
-  b->w += b->inv_inertia * v2_cross (p->rb, impulse);
+  solver_body *sb = world->solver_bodies;
+  int32_t i;
+  for (i = 0; i < world->slot_count; ++i)
+    {
+      const body *b = &world->bodies[i];
+      sb[i].v = b->v;
+      sb[i].w = b->w;
+      sb[i].pv = v2 (0.0, 0.0);
+      sb[i].pw = 0.0;
+      sb[i].im = b->alive ? b->inv_mass : 0.0;
+      sb[i].ii = b->alive ? b->inv_inertia : 0.0;
+    }
 }
 
-/* v_bp - v_ap, eq. 3.15 and the corrected 3.17 */
-static vec2 relative_velocity (const body *a, const body *b, const contact_point *p)
+static void scatter (carom_world *world)
 {
-  vec2 vap = v2_add (a->v, v2_cross_sv (a->w, p->ra));
-  vec2 vbp = v2_add (b->v, v2_cross_sv (b->w, p->rb));
-  return v2_sub (vbp, vap);
+  const solver_body *sb = world->solver_bodies;
+  int32_t i;
+  for (i = 0; i < world->slot_count; ++i)
+    {
+      body *b = &world->bodies[i];
+      if (sb[i].im == 0.0 && sb[i].ii == 0.0)
+        continue; /* static, sleeping or dead: nothing changed */
+      b->v = sb[i].v;
+      b->w = sb[i].w;
+      b->pv = sb[i].pv;
+      b->pw = sb[i].pw;
+    }
 }
 
-static double effective_mass (const body *a, const body *b, vec2 ra, vec2 rb, vec2 dir)
+/* An impulse lambda along a direction d applied at the point: B gets
+ * +lambda d, A gets -lambda d; ra_d = ra x d and rb_d = rb x d. */
+static inline void push (solver_body *a, solver_body *b, vec2 d, double ra_d, double rb_d, double lambda)
 {
-  double rna = v2_cross (ra, dir), rnb = v2_cross (rb, dir);
-  double k = a->inv_mass + b->inv_mass + a->inv_inertia * rna * rna + b->inv_inertia * rnb * rnb;
+  a->v = v2_mad (a->v, -a->im * lambda, d);
+  a->w -= a->ii * ra_d * lambda;
+  b->v = v2_mad (b->v, b->im * lambda, d);
+  b->w += b->ii * rb_d * lambda;
+}
+
+/* (v_bp - v_ap) . d, eq. 3.15 and the corrected 3.17, using
+ * (w x r) . d = w (r x d) */
+static inline double relative_speed (const solver_body *a, const solver_body *b, vec2 d, double ra_d, double rb_d)
+{
+  return v2_dot (v2_sub (b->v, a->v), d) + b->w * rb_d - a->w * ra_d;
+}
+
+static double effective_mass (const solver_body *a, const solver_body *b, double ra_d, double rb_d)
+{
+  double k = a->im + b->im + a->ii * ra_d * ra_d + b->ii * rb_d * rb_d;
   return k > 0.0 ? 1.0 / k : 0.0;
 }
 
 static void prepare (carom_world *world, double h)
 {
   contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
   double g = v2_len (world->gravity);
   /* below this approach speed a contact does not bounce: the speed a body
    * resting under gravity gains in one sub-step, so resting stays resting;
@@ -60,18 +96,24 @@ static void prepare (carom_world *world, double h)
   for (i = 0; i < c->count; ++i)
     {
       contact *k = &c->list[i];
-      body *a = &world->bodies[k->a], *b = &world->bodies[k->b];
+      body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
+      solver_body *a = &sb[k->a], *b = &sb[k->b];
       double vn[MANIFOLD_MAX_POINTS];
       int impact = 0;
-      a->touching = b->touching = 1;
+      ba->touching = bb->touching = 1;
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
-          p->ra = v2_sub (p->point, a->p);
-          p->rb = v2_sub (p->point, b->p);
-          p->normal_mass = effective_mass (a, b, p->ra, p->rb, p->normal); /* eq. 3.23's denominator */
-          p->tangent_mass = effective_mass (a, b, p->ra, p->rb, v2_perp (p->normal));
-          vn[j] = v2_dot (relative_velocity (a, b, p), p->normal);
+          vec2 t = v2_perp (p->normal);
+          p->ra = v2_sub (p->point, ba->p);
+          p->rb = v2_sub (p->point, bb->p);
+          p->rn_a = v2_cross (p->ra, p->normal);
+          p->rn_b = v2_cross (p->rb, p->normal);
+          p->rt_a = v2_cross (p->ra, t);
+          p->rt_b = v2_cross (p->rb, t);
+          p->normal_mass = effective_mass (a, b, p->rn_a, p->rn_b); /* eq. 3.23's denominator */
+          p->tangent_mass = effective_mass (a, b, p->rt_a, p->rt_b);
+          vn[j] = relative_speed (a, b, p->normal, p->rn_a, p->rn_b);
           /* an impact: a point approaching faster than the threshold that
            * reaches the other body within this sub-step */
           if (k->restitution > 0.0 && vn[j] < -threshold && vn[j] * h - p->depth < 0.0)
@@ -80,6 +122,19 @@ static void prepare (carom_world *world, double h)
           p->pseudo_impulse = 0.0;
           if (k->friction == 0.0)
             p->tangent_impulse = 0.0;
+        }
+      /* two points on one face: their 2x2 matrix, if well conditioned */
+      k->block = 0;
+      if (k->count == 2 && k->points[0].normal.x == k->points[1].normal.x
+          && k->points[0].normal.y == k->points[1].normal.y)
+        {
+          const contact_point *p1 = &k->points[0], *p2 = &k->points[1];
+          double im = a->im + b->im;
+          k->k11 = im + a->ii * p1->rn_a * p1->rn_a + b->ii * p1->rn_b * p1->rn_b;
+          k->k22 = im + a->ii * p2->rn_a * p2->rn_a + b->ii * p2->rn_b * p2->rn_b;
+          k->k12 = im + a->ii * p1->rn_a * p2->rn_a + b->ii * p1->rn_b * p2->rn_b;
+          k->det = k->k11 * k->k22 - k->k12 * k->k12;
+          k->block = k->k11 * k->k11 < 1e4 * k->det;
         }
       for (j = 0; j < k->count; ++j)
         {
@@ -109,12 +164,13 @@ static void prepare (carom_world *world, double h)
   for (i = 0; i < c->count; ++i)
     {
       contact *k = &c->list[i];
-      body *a = &world->bodies[k->a], *b = &world->bodies[k->b];
+      solver_body *a = &sb[k->a], *b = &sb[k->b];
       for (j = 0; j < k->count; ++j)
         {
-          contact_point *p = &k->points[j];
-          vec2 t = v2_perp (p->normal);
-          apply_impulse (a, b, p, v2_add (v2_scale (p->normal, p->normal_impulse), v2_scale (t, p->tangent_impulse)));
+          const contact_point *p = &k->points[j];
+          push (a, b, p->normal, p->rn_a, p->rn_b, p->normal_impulse);
+          if (p->tangent_impulse != 0.0)
+            push (a, b, v2_perp (p->normal), p->rt_a, p->rt_b, p->tangent_impulse);
         }
     }
 }
@@ -124,23 +180,15 @@ static void prepare (carom_world *world, double h)
  * by trying each set of active points in turn. Sequential impulses would
  * only approach this answer as iterations go to infinity. Returns 0 when the
  * two points are (nearly) redundant and the caller should iterate instead. */
-static int solve_pair_block (body *a, body *b, contact *k)
+static int solve_pair_block (solver_body *a, solver_body *b, contact *k)
 {
   contact_point *p1 = &k->points[0], *p2 = &k->points[1];
   vec2 n = p1->normal;
-  double r1a = v2_cross (p1->ra, n), r1b = v2_cross (p1->rb, n);
-  double r2a = v2_cross (p2->ra, n), r2b = v2_cross (p2->rb, n);
-  double im = a->inv_mass + b->inv_mass;
-  double k11 = im + a->inv_inertia * r1a * r1a + b->inv_inertia * r1b * r1b;
-  double k22 = im + a->inv_inertia * r2a * r2a + b->inv_inertia * r2b * r2b;
-  double k12 = im + a->inv_inertia * r1a * r2a + b->inv_inertia * r1b * r2b;
-  double det = k11 * k22 - k12 * k12;
+  double k11 = k->k11, k22 = k->k22, k12 = k->k12, det = k->det;
   double x1_old = p1->normal_impulse, x2_old = p2->normal_impulse, x1, x2, b1, b2;
-  if (p2->normal.x != n.x || p2->normal.y != n.y || !(k11 * k11 < 1e4 * det))
-    return 0;
   /* b: the velocity error with the current impulses taken back out */
-  b1 = v2_dot (relative_velocity (a, b, p1), n) - p1->target - (k11 * x1_old + k12 * x2_old);
-  b2 = v2_dot (relative_velocity (a, b, p2), n) - p2->target - (k12 * x1_old + k22 * x2_old);
+  b1 = relative_speed (a, b, n, p1->rn_a, p1->rn_b) - p1->target - (k11 * x1_old + k12 * x2_old);
+  b2 = relative_speed (a, b, n, p2->rn_a, p2->rn_b) - p2->target - (k12 * x1_old + k22 * x2_old);
   /* both points push */
   x1 = (-k22 * b1 + k12 * b2) / det;
   x2 = (k12 * b1 - k11 * b2) / det;
@@ -161,8 +209,8 @@ static int solve_pair_block (body *a, body *b, contact *k)
             }
         }
     }
-  apply_impulse (a, b, p1, v2_scale (n, x1 - x1_old));
-  apply_impulse (a, b, p2, v2_scale (n, x2 - x2_old));
+  push (a, b, n, p1->rn_a, p1->rn_b, x1 - x1_old);
+  push (a, b, n, p2->rn_a, p2->rn_b, x2 - x2_old);
   p1->normal_impulse = x1;
   p2->normal_impulse = x2;
   return 1;
@@ -171,11 +219,12 @@ static int solve_pair_block (body *a, body *b, contact *k)
 static void solve_velocities (carom_world *world)
 {
   contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
   int32_t i, j;
   for (i = 0; i < c->count; ++i)
     {
       contact *k = &c->list[i];
-      body *a = &world->bodies[k->a], *b = &world->bodies[k->b];
+      solver_body *a = &sb[k->a], *b = &sb[k->b];
       if (k->friction > 0.0)
         for (j = 0; j < k->count; ++j)
           {
@@ -183,61 +232,68 @@ static void solve_velocities (carom_world *world)
              * impulse */
             contact_point *p = &k->points[j];
             vec2 t = v2_perp (p->normal);
-            double vt = v2_dot (relative_velocity (a, b, p), t);
+            double vt = relative_speed (a, b, t, p->rt_a, p->rt_b);
             double limit = k->friction * p->normal_impulse;
             double acc = p->tangent_impulse - p->tangent_mass * vt;
             acc = acc > limit ? limit : (acc < -limit ? -limit : acc);
-            apply_impulse (a, b, p, v2_scale (t, acc - p->tangent_impulse));
+            push (a, b, t, p->rt_a, p->rt_b, acc - p->tangent_impulse);
             p->tangent_impulse = acc;
           }
-      if (k->count == 2 && solve_pair_block (a, b, k))
+      if (k->block && solve_pair_block (a, b, k))
         continue;
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
-          double vn = v2_dot (relative_velocity (a, b, p), p->normal);
+          double vn = relative_speed (a, b, p->normal, p->rn_a, p->rn_b);
           double acc = p->normal_impulse - p->normal_mass * (vn - p->target);
           if (acc < 0.0)
             acc = 0.0;
-          apply_impulse (a, b, p, v2_scale (p->normal, acc - p->normal_impulse));
+          push (a, b, p->normal, p->rn_a, p->rn_b, acc - p->normal_impulse);
           p->normal_impulse = acc;
         }
     }
 }
 
-static void apply_pseudo (body *a, body *b, const contact_point *p, vec2 impulse)
-{
-  a->pv = v2_mad (a->pv, -a->inv_mass, impulse);
-  a->pw -= a->inv_inertia * v2_cross (p->ra, impulse);
-  b->pv = v2_mad (b->pv, b->inv_mass, impulse);
-  b->pw += b->inv_inertia * v2_cross (p->rb, impulse);
-}
-
 static void solve_positions (carom_world *world)
 {
   contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
   int32_t i, j;
   for (i = 0; i < c->count; ++i)
     {
       contact *k = &c->list[i];
-      body *a = &world->bodies[k->a], *b = &world->bodies[k->b];
+      solver_body *a = &sb[k->a], *b = &sb[k->b];
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
-          vec2 pa, pb;
-          double vn, acc;
+          double vn, acc, d;
           if (p->bias == 0.0 && p->pseudo_impulse == 0.0)
             continue;
-          pa = v2_add (a->pv, v2_cross_sv (a->pw, p->ra));
-          pb = v2_add (b->pv, v2_cross_sv (b->pw, p->rb));
-          vn = v2_dot (v2_sub (pb, pa), p->normal);
+          vn = v2_dot (v2_sub (b->pv, a->pv), p->normal) + b->pw * p->rn_b - a->pw * p->rn_a;
           acc = p->pseudo_impulse - p->normal_mass * (vn - p->bias);
           if (acc < 0.0)
             acc = 0.0;
-          apply_pseudo (a, b, p, v2_scale (p->normal, acc - p->pseudo_impulse));
+          d = acc - p->pseudo_impulse;
+          a->pv = v2_mad (a->pv, -a->im * d, p->normal);
+          a->pw -= a->ii * p->rn_a * d;
+          b->pv = v2_mad (b->pv, b->im * d, p->normal);
+          b->pw += b->ii * p->rn_b * d;
           p->pseudo_impulse = acc;
         }
     }
+}
+
+int solver_reserve (carom_world *world)
+{
+  return mem_reserve (&world->allocator, (void **) &world->solver_bodies, &world->solver_cap,
+                      world->slot_count, sizeof (solver_body));
+}
+
+void solver_destroy (carom_world *world)
+{
+  mem_free (&world->allocator, world->solver_bodies, (size_t) world->solver_cap * sizeof (solver_body));
+  world->solver_bodies = NULL;
+  world->solver_cap = 0;
 }
 
 void solver_update (carom_world *world, double h)
@@ -245,9 +301,11 @@ void solver_update (carom_world *world, double h)
   int32_t it;
   if (world->contacts.count == 0)
     return;
+  gather (world);
   prepare (world, h);
   for (it = 0; it < world->def.iterations; ++it)
     solve_velocities (world);
   for (it = 0; it < world->def.iterations; ++it)
     solve_positions (world);
+  scatter (world);
 }

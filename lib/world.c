@@ -60,6 +60,7 @@ void carom_world_destroy (carom_world *world)
   carom_allocator a;
   if (!world)
     return;
+  solver_destroy (world);
   contacts_destroy (world);
   broadphase_destroy (world);
   bodies_destroy (world);
@@ -101,6 +102,8 @@ static carom_status substep (carom_world *world, double h)
   world->step_h = 0.0;
   if (st != CAROM_OK)
     return st;
+  if (!solver_reserve (world))
+    return CAROM_ERR_OUT_OF_MEMORY; /* bodies untouched so far */
   sleep_wake_touched (world);
   gravity_update (world, h);
   damping_update (world, h);

@@ -22,6 +22,8 @@ struct carom_world {
 
   broadphase broad;
   contacts contacts;
+  struct solver_body *solver_bodies; /* one per slot (solver.c) */
+  int32_t solver_cap;
 
   /* effects beyond uniform gravity, each off until set (effects.c) */
   struct {
