@@ -234,7 +234,10 @@ CAROM_API carom_status carom_body_def_init (carom_body_def *def,
 
 /**
  * Add a circle of radius `radius` centred on (def->x, def->y). Inertia
- * m r^2 / 2. `def` may be NULL for the defaults. On success *id names the new
+ * m r^2 / 2. Sizes (radius, width, height, side, polygon extent) must lie
+ * between 1e-60 and 1e60 length units, and mass and inertia must come out
+ * as positive finite numbers (BAD_SIZE, or BAD_DENSITY when the density is
+ * what makes them leave that range). `def` may be NULL for the defaults. On success *id names the new
  * body (id may be NULL). Errors: NULL_ARGUMENT, BAD_STRUCT_SIZE, NOT_FINITE,
  * BAD_SIZE, BAD_DENSITY, BAD_ARGUMENT, TOO_MANY_BODIES, OUT_OF_MEMORY.
  */
@@ -265,7 +268,8 @@ CAROM_API carom_status carom_world_add_regular (carom_world *world,
  * x0, y0, x1, y1, ... in either winding. The vertices are copied and
  * re-expressed about the polygon's centroid, which is placed at
  * (def->x, def->y); inertia by signed sub-triangles (eq. 3.13, 3.14).
- * Errors as carom_world_add_regular, plus REPEATED_VERTEX, ZERO_AREA and
+ * Errors as carom_world_add_regular, plus REPEATED_VERTEX, ZERO_AREA (also
+ * for an extent under 1e-60), BAD_SIZE (an extent over 1e60) and
  * SELF_INTERSECTING.
  */
 CAROM_API carom_status carom_world_add_polygon (carom_world *world,

@@ -120,6 +120,30 @@ static carom_status reserve_slot (carom_world *world)
   return CAROM_OK;
 }
 
+/* Sizes whose fourth power (inertia) and 1e-12 fraction (tolerances) stay
+ * within doubles: from 1e-60 to 1e60 length units. */
+static int size_in_range (double x)
+{
+  return x > 1e-60 && x < 1e60;
+}
+
+/* Mass and inertia must be usable numbers: a shape so small or large, or a
+ * density so extreme, that they underflow to 0 or overflow to infinity
+ * would give an infinite inverse mass and poison every contact it joins.
+ * (Statics keep zero inverses and only need a finite size.) */
+static carom_status check_mass (const carom_body_def *def, const shape *s, double inertia_unit)
+{
+  double m = def->density * s->area, inertia = def->density * inertia_unit;
+  if (!(s->area > 0.0) || !is_finite (s->area) || !(inertia_unit > 0.0) || !is_finite (inertia_unit)
+      || !(s->size > 0.0) || !is_finite (s->bound_radius))
+    return CAROM_ERR_BAD_SIZE;
+  if (def->type == CAROM_DYNAMIC
+      && (!(m > 0.0) || !is_finite (m) || !(inertia > 0.0) || !is_finite (inertia) || !is_finite (1.0 / m)
+          || !is_finite (1.0 / inertia)))
+    return CAROM_ERR_BAD_DENSITY;
+  return CAROM_OK;
+}
+
 /* Place a fully built shape into a new body. Cannot fail: reserve_slot ran. */
 static carom_body_id commit_body (carom_world *world, const carom_body_def *def, const shape *s, double inertia_unit)
 {
@@ -186,9 +210,12 @@ carom_status carom_world_add_circle (carom_world *world, const carom_body_def *d
     return st;
   if (!is_finite (radius))
     return CAROM_ERR_NOT_FINITE;
-  if (radius <= 0.0)
+  if (radius <= 0.0 || !size_in_range (radius))
     return CAROM_ERR_BAD_SIZE;
   shape_init_circle (&s, radius);
+  st = check_mass (def, &s, s.unit_inertia);
+  if (st != CAROM_OK)
+    return st;
   new_id = commit_body (world, def, &s, s.unit_inertia);
   if (id)
     *id = new_id;
@@ -209,6 +236,12 @@ static carom_status add_polygon_shape (carom_world *world, const carom_body_def 
   if (st != CAROM_OK)
     return st;
   (void) centroid; /* the body's position is its centre of mass: def->x, y */
+  st = check_mass (def, &s, exact_unit_inertia ? *exact_unit_inertia : s.unit_inertia);
+  if (st != CAROM_OK)
+    {
+      shape_destroy (&s, &world->allocator);
+      return st;
+    }
   new_id = commit_body (world, &placed, &s, exact_unit_inertia ? *exact_unit_inertia : s.unit_inertia);
   if (id)
     *id = new_id;
@@ -235,7 +268,7 @@ carom_status carom_world_add_box (carom_world *world, const carom_body_def *def,
     return st;
   if (!is_finite (width) || !is_finite (height))
     return CAROM_ERR_NOT_FINITE;
-  if (width <= 0.0 || height <= 0.0)
+  if (width <= 0.0 || height <= 0.0 || !size_in_range (width) || !size_in_range (height))
     return CAROM_ERR_BAD_SIZE;
   xy[0] = -0.5 * width, xy[1] = -0.5 * height;
   xy[2] = 0.5 * width, xy[3] = -0.5 * height;
@@ -261,7 +294,7 @@ carom_status carom_world_add_regular (carom_world *world, const carom_body_def *
     return CAROM_ERR_TOO_MANY_VERTICES;
   if (!is_finite (side))
     return CAROM_ERR_NOT_FINITE;
-  if (side <= 0.0)
+  if (side <= 0.0 || !size_in_range (side))
     return CAROM_ERR_BAD_SIZE;
   xy = mem_alloc (&world->allocator, (size_t) n * 2 * sizeof (double));
   if (!xy)

@@ -38,16 +38,21 @@ typedef struct clip_vertex {
 } clip_vertex;
 
 /* Keep the part of segment `in` where dot(n, x) <= offset (Sutherland-Hodgman
- * on one plane). Returns the number of points kept (0 to 2). */
-static int clip_segment (clip_vertex out[2], const clip_vertex in[2], vec2 n, double offset, uint32_t plane_id)
+ * on one plane). Returns the number of points kept (0 to 2). A vertex within
+ * `tol` of the plane counts as on it and keeps its own id: boxes of equal
+ * width stacked exactly have their corners on each other's side planes, and
+ * rounding must not flip those points between "vertex" and "clipped" ids
+ * from one step to the next (which would drop their warm-start impulse). */
+static int clip_segment (clip_vertex out[2], const clip_vertex in[2], vec2 n, double offset, uint32_t plane_id,
+                         double tol)
 {
   int count = 0;
   double d0 = v2_dot (n, in[0].v) - offset, d1 = v2_dot (n, in[1].v) - offset;
-  if (d0 <= 0.0)
+  if (d0 <= tol)
     out[count++] = in[0];
-  if (d1 <= 0.0)
+  if (d1 <= tol)
     out[count++] = in[1];
-  if (d0 * d1 < 0.0)
+  if ((d0 < -tol && d1 > tol) || (d0 > tol && d1 < -tol))
     {
       double t = d0 / (d0 - d1);
       out[count].v = v2_lerp (in[0].v, in[1].v, t);
@@ -62,7 +67,7 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
   int32_t edge_a, edge_b, ref_edge, inc_edge = 0, i, n_inc, flip;
   const convex_piece *ref, *inc;
   xform xref, xinc;
-  double sep_a, sep_b, best = INFINITY, tol = 0.1 * margin;
+  double sep_a, sep_b, best = INFINITY, tol = 0.1 * margin, side_tol;
   vec2 n_ref, v1, v2_, tangent;
   clip_vertex seg[2], clip1[2], clip2[2];
   m->count = 0;
@@ -102,10 +107,11 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
   v1 = xform_apply (xref, ref->vertices[ref_edge]);
   v2_ = xform_apply (xref, ref->vertices[(ref_edge + 1) % ref->count]);
   tangent = v2_normalize (v2_sub (v2_, v1));
+  side_tol = 1e-9 * v2_len (v2_sub (v2_, v1));
   /* clip to the reference edge's two side planes */
-  if (clip_segment (clip1, seg, v2_neg (tangent), -v2_dot (tangent, v1), 0x8000u) < 2)
+  if (clip_segment (clip1, seg, v2_neg (tangent), -v2_dot (tangent, v1), 0x8000u, side_tol) < 2)
     return 0;
-  if (clip_segment (clip2, clip1, tangent, v2_dot (tangent, v2_), 0x8001u) < 2)
+  if (clip_segment (clip2, clip1, tangent, v2_dot (tangent, v2_), 0x8001u, side_tol) < 2)
     return 0;
   for (i = 0; i < 2; ++i)
     {

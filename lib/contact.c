@@ -211,11 +211,25 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
     }
 }
 
+/* Put last step's contacts back, as if the last contacts_update had not
+ * run (its own failure, or a later stage's, within the same sub-step). */
+void contacts_undo (carom_world *world)
+{
+  contacts *c = &world->contacts;
+  contact *t = c->list;
+  int32_t tcap = c->cap, i, points = 0;
+  c->list = c->old, c->count = c->old_count, c->cap = c->old_cap;
+  c->old = t, c->old_cap = tcap, c->old_count = 0;
+  for (i = 0; i < c->count; ++i)
+    points += c->list[i].count;
+  c->point_count = points;
+}
+
 carom_status contacts_update (carom_world *world)
 {
   contacts *c = &world->contacts;
   contact *t = c->old;
-  int32_t tcap = c->old_cap, saved_points = c->point_count;
+  int32_t tcap = c->old_cap;
   /* last step's contacts become `old`; this step fills the other buffer */
   c->old = c->list, c->old_count = c->count, c->old_cap = c->cap;
   c->list = t, c->cap = tcap, c->count = 0;
@@ -223,11 +237,7 @@ carom_status contacts_update (carom_world *world)
   c->out_of_memory = 0;
   if (!build_table (world) || !broadphase_update (world, on_pair, NULL) || c->out_of_memory)
     {
-      /* put last step's contacts back: the world is as it was */
-      t = c->list, tcap = c->cap;
-      c->list = c->old, c->count = c->old_count, c->cap = c->old_cap;
-      c->old = t, c->old_cap = tcap, c->old_count = 0;
-      c->point_count = saved_points;
+      contacts_undo (world); /* the world is as it was */
       return CAROM_ERR_OUT_OF_MEMORY;
     }
   return CAROM_OK;

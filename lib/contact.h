@@ -19,8 +19,6 @@ typedef struct contact_point {
   double target;        /* normal relative velocity to reach (restitution) */
   double bias;          /* pseudo-velocity that removes overlap */
   double normal_impulse, tangent_impulse, pseudo_impulse;
-  double first_round;   /* normal impulse of the solver's earlier rounds */
-  int32_t waiting;      /* apart, may close its gap but not cross it */
 } contact_point;
 
 typedef struct contact {
@@ -30,7 +28,7 @@ typedef struct contact {
   double slop;                /* overlap left alone, from the bodies' sizes */
   int32_t first_point;        /* index of points[0] among all points */
   int32_t block;              /* two points solved as one 2x2 problem */
-  int32_t deferred;           /* apart and not meeting: waits (solver.c) */
+  int32_t deferred;           /* bouncy, apart, not meeting: sits out */
   double k11, k12, k22, det;  /* its matrix, set by the solver's prepare */
   int32_t count;
   contact_point points[MANIFOLD_MAX_POINTS];
@@ -54,6 +52,8 @@ void contacts_destroy (struct carom_world *world);
 /* Detect all contacts at the current positions, carrying over the impulses
  * of matching points from the previous detection. */
 carom_status contacts_update (struct carom_world *world);
+/* Undo the last contacts_update (a later stage of the sub-step failed). */
+void contacts_undo (struct carom_world *world);
 /* Forget every contact that involves `slot` (the body is being removed). */
 void contacts_forget_body (struct carom_world *world, int32_t slot);
 

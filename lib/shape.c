@@ -93,6 +93,13 @@ carom_status polygon_validate (const double *xy, int32_t n)
   extent = v2_len (v2_sub (hi, lo));
   if (!is_finite (extent))
     return CAROM_ERR_NOT_FINITE; /* finite coordinates whose spread overflows */
+  /* Mass properties take the fourth power of the size and the tolerances
+   * below a 1e-12 fraction of it: sizes whose powers leave the range of
+   * doubles cannot be simulated. */
+  if (!(extent > 1e-60))
+    return CAROM_ERR_ZERO_AREA;
+  if (!(extent < 1e60))
+    return CAROM_ERR_BAD_SIZE;
   /* Consecutive vertices closer than a relative 1e-12 of the polygon's size
    * are one vertex given twice: the edge between them has no direction. */
   for (i = 0; i < n; ++i)

@@ -97,7 +97,6 @@ static void set_targets (contact *k, const double *vn, int impact, double h)
   for (j = 0; j < k->count; ++j)
     {
       contact_point *p = &k->points[j];
-      p->waiting = 0;
       if (impact)
         /* eq. 3.18 at every point of the manifold: each may leave at e times
          * its own approach speed. Then the impulses change the kinetic
@@ -110,7 +109,6 @@ static void set_targets (contact *k, const double *vn, int impact, double h)
           /* a speculative point (apart by -depth) may close its gap but not
            * pass it; a touching one may not approach */
           p->target = p->depth < 0.0 ? p->depth / h : 0.0;
-          p->waiting = p->depth < 0.0;
           /* a separating point that other impacts push back gets eq. 3.18
            * too, so a chain of bodies hit at once stays elastic (the same
            * energy argument as above) */
@@ -158,7 +156,6 @@ static void prepare (carom_world *world, double h)
             impact = 1;
           p->bias = p->depth > k->slop ? beta * (p->depth - k->slop) / h : 0.0;
           p->pseudo_impulse = 0.0;
-          p->first_round = 0.0;
           if (k->friction == 0.0)
             p->tangent_impulse = 0.0;
         }
@@ -175,20 +172,23 @@ static void prepare (carom_world *world, double h)
           k->det = k->k11 * k->k22 - k->k12 * k->k12;
           k->block = k->k11 * k->k11 < 1e4 * k->det;
         }
-      /* a contact whose points are all still apart and that does not reach
-       * this sub-step waits: see activate_deferred */
-      /* (inelastic contacts never wait: absorbing the approach is what
-       * e = 0 asks for, and stacks need them from the first iteration) */
-      k->deferred = !impact && k->restitution > 0.0;
+      /* A bouncy contact (e >= 0.5) still apart that does not close its gap
+       * on its own this sub-step sits this step out. Constraining it would
+       * stop its bodies at the gap's closing speed when an impact elsewhere
+       * sends them into each other, silently absorbing the rest of their
+       * approach (an elastic gas lost a quarter of its energy in 3000 steps
+       * that way); left alone they meet in the next step as an impact of
+       * their own, eq. 3.18 and all, and the overlap of that one step is
+       * removed by split impulses, which add no energy. Less bouncy contacts
+       * are always solved: for them absorbing is close to what e asks, and
+       * piles (rain) would otherwise sink into each other. */
+      k->deferred = !impact && k->restitution >= 0.5;
       for (j = 0; j < k->count; ++j)
         if (k->points[j].depth >= 0.0)
           k->deferred = 0;
       if (k->deferred)
         for (j = 0; j < k->count; ++j)
-          {
-            k->points[j].normal_impulse = k->points[j].tangent_impulse = 0.0;
-            k->points[j].waiting = 1;
-          }
+          k->points[j].normal_impulse = k->points[j].tangent_impulse = 0.0;
       else
         set_targets (k, vn, impact, h);
     }
@@ -268,7 +268,7 @@ static void solve_velocities (carom_world *world)
             contact_point *p = &k->points[j];
             vec2 t = v2_perp (p->normal);
             double vt = relative_speed (a, b, t, p->rt_a, p->rt_b);
-            double limit = k->friction * (p->normal_impulse + p->first_round);
+            double limit = k->friction * p->normal_impulse;
             double acc = p->tangent_impulse - p->tangent_mass * vt;
             acc = acc > limit ? limit : (acc < -limit ? -limit : acc);
             push (a, b, t, p->rt_a, p->rt_b, acc - p->tangent_impulse);
@@ -318,99 +318,223 @@ static void solve_positions (carom_world *world)
     }
 }
 
+/* ------------------------------------------------------ shock propagation
+ *
+ * Sequential impulses pass momentum between bodies a little per iteration,
+ * about the ratio of the masses at a time: a box a thousand times heavier
+ * than the one it stands on presses it through the ground long before the
+ * iterations converge. Under gravity, when touching bodies differ in mass
+ * more than tenfold, one more pass after the iterations
+ * goes through the contacts from the ground up (levels: a static body is 0,
+ * a body touching level k is k + 1) and solves each with its lower body held
+ * still, so every body rests on what is below it whatever the masses
+ * (Guendelman, Bridson and Fedkiw's shock propagation). The pass only
+ * removes approach: it applies no impulse where the iterations already
+ * succeeded. */
+
+/* Levels of the bodies and the contacts in level order, in `order`. Returns
+ * the number of contacts ordered (those touching a level-0 body's pile). */
+static int32_t order_by_level (carom_world *world, int32_t *order)
+{
+  const contacts *c = &world->contacts;
+  const solver_body *sb = world->solver_bodies;
+  int32_t n = world->slot_count, i, head = 0, tail = 0, count = 0;
+  int32_t *level = world->solver_scratch, *start = level + n, *adj = start + n + 1, *queue = adj + 2 * c->count;
+  for (i = 0; i <= n; ++i)
+    start[i] = 0;
+  for (i = 0; i < c->count; ++i)
+    {
+      start[c->list[i].a + 1]++;
+      start[c->list[i].b + 1]++;
+    }
+  for (i = 0; i < n; ++i)
+    start[i + 1] += start[i];
+  for (i = 0; i < c->count; ++i)
+    {
+      adj[start[c->list[i].a]++] = i;
+      adj[start[c->list[i].b]++] = i;
+    }
+  for (i = n; i > 0; --i)
+    start[i] = start[i - 1];
+  start[0] = 0;
+  for (i = 0; i < n; ++i)
+    {
+      level[i] = -1;
+      if (sb[i].im == 0.0 && start[i + 1] > start[i])
+        {
+          level[i] = 0;
+          queue[tail++] = i;
+        }
+    }
+  while (head < tail)
+    {
+      int32_t u = queue[head++], e;
+      for (e = start[u]; e < start[u + 1]; ++e)
+        {
+          const contact *k = &c->list[adj[e]];
+          int32_t v = k->a == u ? k->b : k->a;
+          if (level[v] < 0)
+            {
+              level[v] = level[u] + 1;
+              queue[tail++] = v;
+            }
+          /* contacts in the order their lower body is reached */
+          if (level[v] > level[u])
+            order[count++] = adj[e];
+        }
+    }
+  return count;
+}
+
+/* Smallest x >= 0 with K x + b >= 0 and complementarity, for a 2x2
+ * symmetric K (the case enumeration of solve_pair_block, from x = 0). */
+static int lcp2 (double k11, double k12, double k22, double b1, double b2, double *x1, double *x2)
+{
+  double det = k11 * k22 - k12 * k12;
+  if (det > 1e-12 * k11 * k22)
+    {
+      *x1 = (-k22 * b1 + k12 * b2) / det;
+      *x2 = (k12 * b1 - k11 * b2) / det;
+      if (*x1 >= 0.0 && *x2 >= 0.0)
+        return 1;
+    }
+  *x1 = -b1 / k11, *x2 = 0.0;
+  if (*x1 >= 0.0 && k12 * *x1 + b2 >= 0.0)
+    return 1;
+  *x1 = 0.0, *x2 = -b2 / k22;
+  if (*x2 >= 0.0 && k12 * *x2 + b1 >= 0.0)
+    return 1;
+  *x1 = *x2 = 0.0;
+  return b1 >= 0.0 && b2 >= 0.0;
+}
+
+static void shock_pass (carom_world *world, const int32_t *order, int32_t count, int pseudo, double tol)
+{
+  vec2 up_dir = v2_neg (v2_normalize (world->gravity));
+  const contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  const int32_t *level = world->solver_scratch;
+  int32_t i, j;
+  for (i = 0; i < count; ++i)
+    {
+      const contact *k = &c->list[order[i]];
+      solver_body *a = &sb[k->a], *b = &sb[k->b];
+      /* hold the lower body still: only the upper one takes the impulse */
+      int a_is_lower = level[k->a] < level[k->b];
+      solver_body *up = a_is_lower ? b : a;
+      double err[MANIFOLD_MAX_POINTS], x[MANIFOLD_MAX_POINTS], worst = 0.0;
+      /* only where the upper body rests on the lower one: the normal from
+       * lower to upper within 60 degrees of straight up */
+      double lift = v2_dot (k->points[0].normal, up_dir);
+      if ((a_is_lower ? lift : -lift) < 0.5)
+        continue;
+      for (j = 0; j < k->count; ++j)
+        {
+          const contact_point *p = &k->points[j];
+          /* the relative normal speed of b against a, as everywhere */
+          double vn = pseudo ? v2_dot (v2_sub (b->pv, a->pv), p->normal) + b->pw * p->rn_b - a->pw * p->rn_a
+                             : relative_speed (a, b, p->normal, p->rn_a, p->rn_b);
+          err[j] = vn - (pseudo ? p->bias : p->target);
+          worst = err[j] < worst ? err[j] : worst;
+          x[j] = 0.0;
+        }
+      if (worst >= -tol)
+        continue; /* the iterations did well enough here */
+      if (k->block)
+        {
+          /* a face: both points at once, so the push does not tip the body */
+          double r1 = a_is_lower ? k->points[0].rn_b : k->points[0].rn_a;
+          double r2 = a_is_lower ? k->points[1].rn_b : k->points[1].rn_a;
+          if (!lcp2 (up->im + up->ii * r1 * r1, up->im + up->ii * r1 * r2, up->im + up->ii * r2 * r2, err[0], err[1],
+                     &x[0], &x[1]))
+            continue;
+        }
+      else
+        for (j = 0; j < k->count; ++j)
+          {
+            double r = a_is_lower ? k->points[j].rn_b : k->points[j].rn_a, m = up->im + up->ii * r * r;
+            x[j] = err[j] < 0.0 && m > 0.0 ? -err[j] / m : 0.0;
+          }
+      for (j = 0; j < k->count; ++j)
+        {
+          const contact_point *p = &k->points[j];
+          double r_up = a_is_lower ? p->rn_b : p->rn_a;
+          /* raising vn: +x n on b, or -x n on a */
+          double lambda = a_is_lower ? x[j] : -x[j];
+          if (x[j] == 0.0)
+            continue;
+          if (pseudo)
+            {
+              up->pv = v2_mad (up->pv, up->im * lambda, p->normal);
+              up->pw += up->ii * r_up * lambda;
+            }
+          else
+            {
+              up->v = v2_mad (up->v, up->im * lambda, p->normal);
+              up->w += up->ii * r_up * lambda;
+            }
+        }
+    }
+}
+
+/* Whether two touching dynamic bodies differ in mass more than tenfold:
+ * below that the iterations handle stacks well, and holding lower bodies
+ * still in a loose pile (rain) only moves contacts around. */
+static int heavy_on_light (const carom_world *world)
+{
+  const contacts *c = &world->contacts;
+  const solver_body *sb = world->solver_bodies;
+  int32_t i;
+  for (i = 0; i < c->count; ++i)
+    {
+      double ia = sb[c->list[i].a].im, ib = sb[c->list[i].b].im;
+      if (ia > 0.0 && ib > 0.0 && (ia > 10.0 * ib || ib > 10.0 * ia))
+        return 1;
+    }
+  return 0;
+}
+
 int solver_reserve (carom_world *world)
 {
-  return mem_reserve (&world->allocator, (void **) &world->solver_bodies, &world->solver_cap,
-                      world->slot_count, sizeof (solver_body));
+  int32_t need = 4 * world->slot_count + 1 + 3 * world->contacts.count;
+  return mem_reserve (&world->allocator, (void **) &world->solver_bodies, &world->solver_cap, world->slot_count,
+                      sizeof (solver_body))
+         && mem_reserve (&world->allocator, (void **) &world->solver_scratch, &world->scratch_cap, need,
+                         sizeof (int32_t));
 }
 
 void solver_destroy (carom_world *world)
 {
   mem_free (&world->allocator, world->solver_bodies, (size_t) world->solver_cap * sizeof (solver_body));
+  mem_free (&world->allocator, world->solver_scratch, (size_t) world->scratch_cap * sizeof (int32_t));
   world->solver_bodies = NULL;
-  world->solver_cap = 0;
-}
-
-/* Contacts still apart that would not have met on their own within the
- * sub-step wait out the first round of iterations (constraining them from
- * the start would stop them at the gap's closing speed and silently absorb
- * the rest of an approach that other impacts cause: an elastic gas lost a
- * quarter of its energy in 3000 steps that way). If the impacts solved in
- * the first round send some of them into each other, another round solves
- * every contact again from the velocities the last round left, with
- * targets (eq. 3.18) measured on those velocities: as if the collisions of
- * the step had happened one after the other. Each round conserves energy
- * at e = 1 by the argument in set_targets. Returns 1 when another round is
- * needed; then every contact's targets are set for it and its accumulated
- * impulse moved to first_round (the earlier rounds' total). */
-/* Rounds of iterations per sub-step at the most: each lets one more wave
- * of collisions within the step happen after the one before. */
-#define MAX_ROUNDS 4
-
-static int next_round (carom_world *world, double h)
-{
-  contacts *c = &world->contacts;
-  solver_body *sb = world->solver_bodies;
-  double threshold = 2.0 * v2_len (world->gravity) * h;
-  int32_t i, j, joined = 0;
-  for (i = 0; i < c->count && !joined; ++i)
-    {
-      const contact *k = &c->list[i];
-      for (j = 0; j < k->count; ++j)
-        {
-          const contact_point *p = &k->points[j];
-          /* a point that was waiting for its gap to close, now sent across
-           * it by the round's impulses (held at the gap's closing speed if
-           * it took part in the round) */
-          if (p->waiting && k->restitution > 0.0
-              && relative_speed (&sb[k->a], &sb[k->b], p->normal, p->rn_a, p->rn_b) * h - p->depth
-                     < -1e-12 * (p->depth < 0.0 ? -p->depth : 1.0))
-            joined = 1;
-        }
-    }
-  if (!joined)
-    return 0;
-  for (i = 0; i < c->count; ++i)
-    {
-      contact *k = &c->list[i];
-      double vn[MANIFOLD_MAX_POINTS];
-      int impact = 0;
-      for (j = 0; j < k->count; ++j)
-        {
-          contact_point *p = &k->points[j];
-          vn[j] = relative_speed (&sb[k->a], &sb[k->b], p->normal, p->rn_a, p->rn_b);
-          if (reaches (k, p, vn[j], threshold, h))
-            impact = 1;
-          p->first_round += p->normal_impulse;
-          p->normal_impulse = 0.0;
-        }
-      k->deferred = 0;
-      set_targets (k, vn, impact, h);
-    }
-  return 1;
+  world->solver_scratch = NULL;
+  world->solver_cap = world->scratch_cap = 0;
 }
 
 void solver_update (carom_world *world, double h)
 {
-  int32_t it, round;
+  int32_t it, shocked, *order = NULL;
+  double tol = 0.0;
   if (world->contacts.count == 0)
     return;
   gather (world);
   prepare (world, h);
   for (it = 0; it < world->def.iterations; ++it)
     solve_velocities (world);
-  for (round = 1; round < MAX_ROUNDS && next_round (world, h); ++round)
-    for (it = 0; it < world->def.iterations; ++it)
-      solve_velocities (world);
-  if (round > 1)
+  shocked = 0;
+  if ((world->gravity.x != 0.0 || world->gravity.y != 0.0) && heavy_on_light (world))
     {
-      /* the total impulse, for warm starting the next step */
-      int32_t i, j;
-      for (i = 0; i < world->contacts.count; ++i)
-        for (j = 0; j < world->contacts.list[i].count; ++j)
-          world->contacts.list[i].points[j].normal_impulse += world->contacts.list[i].points[j].first_round;
+      order = world->solver_scratch + 3 * world->slot_count + 1 + 2 * world->contacts.count;
+      shocked = order_by_level (world, order);
+      /* 0.1% of the speed gravity adds in a sub-step: below that the
+       * iterations are left alone */
+      tol = 1e-3 * v2_len (world->gravity) * h;
+      shock_pass (world, order, shocked, 0, tol);
     }
   for (it = 0; it < world->def.iterations; ++it)
     solve_positions (world);
+  if (shocked)
+    shock_pass (world, order, shocked, 1, tol);
   scatter (world);
 }

@@ -103,7 +103,10 @@ static carom_status substep (carom_world *world, double h)
   if (st != CAROM_OK)
     return st;
   if (!solver_reserve (world))
-    return CAROM_ERR_OUT_OF_MEMORY; /* bodies untouched so far */
+    {
+      contacts_undo (world); /* nothing has changed */
+      return CAROM_ERR_OUT_OF_MEMORY;
+    }
   sleep_wake_touched (world);
   gravity_update (world, h);
   damping_update (world, h);

@@ -24,6 +24,8 @@ struct carom_world {
   contacts contacts;
   struct solver_body *solver_bodies; /* one per slot (solver.c) */
   int32_t solver_cap;
+  int32_t *solver_scratch;           /* levels and orders (solver.c) */
+  int32_t scratch_cap;
 
   /* effects beyond uniform gravity, each off until set (effects.c) */
   struct {
