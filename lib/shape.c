@@ -194,6 +194,29 @@ static int turn_sign (vec2 a, vec2 b, vec2 c)
   return cr > tol ? 1 : (cr < -tol ? -1 : 0);
 }
 
+/* Remove vertices where the outline runs straight on (collinear within the
+ * turn_sign tolerance), in place; returns the new count (at least 3). A
+ * convex piece must have one edge per direction: SAT's clipping takes a
+ * single incident edge, and half of a split face would miss the deepest
+ * corner. */
+static int32_t drop_flat (vec2 *v, int32_t n)
+{
+  int32_t i = 0;
+  while (n > 3 && i < n)
+    {
+      if (turn_sign (v[(i + n - 1) % n], v[i], v[(i + 1) % n]) == 0)
+        {
+          memmove (&v[i], &v[i + 1], (size_t) (n - i - 1) * sizeof *v);
+          n--;
+          if (i > 0)
+            i--;
+        }
+      else
+        i++;
+    }
+  return n;
+}
+
 static int point_in_triangle (vec2 p, vec2 a, vec2 b, vec2 c)
 {
   /* closed triangle, counter-clockwise */
@@ -418,7 +441,7 @@ static carom_status decompose (shape *s, const carom_allocator *a)
       if (lists[k].count == 0)
         continue;
       cp = &s->pieces[s->piece_count++];
-      cp->count = lists[k].count;
+      cp->count = cp->alloc_count = lists[k].count;
       cp->vertices = mem_alloc (a, (size_t) cp->count * 2 * sizeof (vec2));
       if (!cp->vertices)
         {
@@ -429,6 +452,8 @@ static carom_status decompose (shape *s, const carom_allocator *a)
       cp->normals = cp->vertices + cp->count;
       for (j = 0; j < cp->count; ++j)
         cp->vertices[j] = v[lists[k].idx[j]];
+      cp->count = drop_flat (cp->vertices, cp->count);
+      cp->normals = cp->vertices + cp->count;
       compute_normals (cp->vertices, cp->normals, cp->count);
       piece_bounds (cp);
     }
@@ -485,6 +510,9 @@ carom_status shape_init_polygon (shape *s, const carom_allocator *a, const doubl
   s->size = 2.0 * area / perimeter;
   if (s->convex)
     {
+      int32_t flat = 0;
+      for (i = 0; i < n; ++i)
+        flat += turn_sign (s->vertices[(i + n - 1) % n], s->vertices[i], s->vertices[(i + 1) % n]) == 0;
       s->pieces = mem_alloc (a, sizeof (convex_piece));
       if (!s->pieces)
         {
@@ -493,9 +521,31 @@ carom_status shape_init_polygon (shape *s, const carom_allocator *a, const doubl
           return CAROM_ERR_OUT_OF_MEMORY;
         }
       s->piece_count = s->piece_alloc = 1;
-      s->pieces[0].count = n;
-      s->pieces[0].vertices = s->vertices; /* shared with the outline */
-      s->pieces[0].normals = s->normals;
+      if (!flat)
+        {
+          s->pieces_shared = 1;
+          s->pieces[0].count = n;
+          s->pieces[0].vertices = s->vertices; /* shared with the outline */
+          s->pieces[0].normals = s->normals;
+        }
+      else
+        {
+          /* the outline as drawn keeps its straight-through vertices; the
+           * piece collisions use does not */
+          convex_piece *cp = &s->pieces[0];
+          cp->vertices = mem_alloc (a, (size_t) n * 2 * sizeof (vec2));
+          if (!cp->vertices)
+            {
+              s->piece_count = 0;
+              shape_destroy (s, a);
+              return CAROM_ERR_OUT_OF_MEMORY;
+            }
+          cp->alloc_count = n;
+          memcpy (cp->vertices, s->vertices, (size_t) n * sizeof (vec2));
+          cp->count = drop_flat (cp->vertices, n);
+          cp->normals = cp->vertices + cp->count;
+          compute_normals (cp->vertices, cp->normals, cp->count);
+        }
       piece_bounds (&s->pieces[0]);
       return CAROM_OK;
     }
@@ -512,9 +562,9 @@ void shape_destroy (shape *s, const carom_allocator *a)
     return;
   if (s->pieces)
     {
-      if (!s->convex)
+      if (!s->pieces_shared)
         for (i = 0; i < s->piece_count; ++i)
-          mem_free (a, s->pieces[i].vertices, (size_t) s->pieces[i].count * 2 * sizeof (vec2));
+          mem_free (a, s->pieces[i].vertices, (size_t) s->pieces[i].alloc_count * 2 * sizeof (vec2));
       mem_free (a, s->pieces, (size_t) s->piece_alloc * sizeof (convex_piece));
     }
   mem_free (a, s->vertices, (size_t) s->count * 2 * sizeof (vec2));

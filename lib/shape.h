@@ -17,6 +17,7 @@ typedef struct convex_piece {
   vec2 *normals;
   vec2 center;         /* centre of its bounding circle (for piece culling) */
   double bound_radius; /* every vertex lies within this of `center` */
+  int32_t alloc_count; /* vertices allocated (count may be less) */
 } convex_piece;
 
 typedef struct shape {
@@ -25,7 +26,8 @@ typedef struct shape {
   int32_t count;        /* polygon outline: vertex count */
   vec2 *vertices;       /* polygon outline, counter-clockwise, about centroid */
   vec2 *normals;        /* outline edge normals */
-  int convex;           /* the outline is convex: pieces[0] is the outline */
+  int convex;           /* the outline is convex: one piece */
+  int pieces_shared;    /* pieces[0] uses the outline's own arrays */
   int32_t piece_count;
   int32_t piece_alloc;  /* pieces allocated (>= piece_count) */
   convex_piece *pieces;

@@ -159,16 +159,17 @@ static void prepare (carom_world *world, double h)
           if (k->friction == 0.0)
             p->tangent_impulse = 0.0;
         }
-      /* two points on one face: their 2x2 matrix, if well conditioned */
+      /* two points solved together: their 2x2 matrix, if well conditioned
+       * (on one face the normals agree; the vertex-edge method may give two
+       * points with their own normals, coupled by n1 . n2) */
       k->block = 0;
-      if (k->count == 2 && k->points[0].normal.x == k->points[1].normal.x
-          && k->points[0].normal.y == k->points[1].normal.y)
+      if (k->count == 2)
         {
           const contact_point *p1 = &k->points[0], *p2 = &k->points[1];
           double im = a->im + b->im;
           k->k11 = im + a->ii * p1->rn_a * p1->rn_a + b->ii * p1->rn_b * p1->rn_b;
           k->k22 = im + a->ii * p2->rn_a * p2->rn_a + b->ii * p2->rn_b * p2->rn_b;
-          k->k12 = im + a->ii * p1->rn_a * p2->rn_a + b->ii * p1->rn_b * p2->rn_b;
+          k->k12 = im * v2_dot (p1->normal, p2->normal) + a->ii * p1->rn_a * p2->rn_a + b->ii * p1->rn_b * p2->rn_b;
           k->det = k->k11 * k->k22 - k->k12 * k->k12;
           k->block = k->k11 * k->k11 < 1e4 * k->det;
         }
@@ -208,7 +209,7 @@ static void prepare (carom_world *world, double h)
     }
 }
 
-/* Two points on one face (a box lying flat) solved together, exactly: the
+/* Two points (a box lying flat) solved together, exactly: the
  * 2x2 linear complementarity problem  w = K x + b, x >= 0, w >= 0, x.w = 0,
  * by trying each set of active points in turn. Sequential impulses would
  * only approach this answer as iterations go to infinity. Returns 0 when the
@@ -216,12 +217,11 @@ static void prepare (carom_world *world, double h)
 static int solve_pair_block (solver_body *a, solver_body *b, contact *k)
 {
   contact_point *p1 = &k->points[0], *p2 = &k->points[1];
-  vec2 n = p1->normal;
   double k11 = k->k11, k22 = k->k22, k12 = k->k12, det = k->det;
   double x1_old = p1->normal_impulse, x2_old = p2->normal_impulse, x1, x2, b1, b2;
   /* b: the velocity error with the current impulses taken back out */
-  b1 = relative_speed (a, b, n, p1->rn_a, p1->rn_b) - p1->target - (k11 * x1_old + k12 * x2_old);
-  b2 = relative_speed (a, b, n, p2->rn_a, p2->rn_b) - p2->target - (k12 * x1_old + k22 * x2_old);
+  b1 = relative_speed (a, b, p1->normal, p1->rn_a, p1->rn_b) - p1->target - (k11 * x1_old + k12 * x2_old);
+  b2 = relative_speed (a, b, p2->normal, p2->rn_a, p2->rn_b) - p2->target - (k12 * x1_old + k22 * x2_old);
   /* both points push */
   x1 = (-k22 * b1 + k12 * b2) / det;
   x2 = (k12 * b1 - k11 * b2) / det;
@@ -242,8 +242,8 @@ static int solve_pair_block (solver_body *a, solver_body *b, contact *k)
             }
         }
     }
-  push (a, b, n, p1->rn_a, p1->rn_b, x1 - x1_old);
-  push (a, b, n, p2->rn_a, p2->rn_b, x2 - x2_old);
+  push (a, b, p1->normal, p1->rn_a, p1->rn_b, x1 - x1_old);
+  push (a, b, p2->normal, p2->rn_a, p2->rn_b, x2 - x2_old);
   p1->normal_impulse = x1;
   p2->normal_impulse = x2;
   return 1;
@@ -445,8 +445,9 @@ static void shock_pass (carom_world *world, const int32_t *order, int32_t count,
           /* a face: both points at once, so the push does not tip the body */
           double r1 = a_is_lower ? k->points[0].rn_b : k->points[0].rn_a;
           double r2 = a_is_lower ? k->points[1].rn_b : k->points[1].rn_a;
-          if (!lcp2 (up->im + up->ii * r1 * r1, up->im + up->ii * r1 * r2, up->im + up->ii * r2 * r2, err[0], err[1],
-                     &x[0], &x[1]))
+          double n12 = v2_dot (k->points[0].normal, k->points[1].normal);
+          if (!lcp2 (up->im + up->ii * r1 * r1, up->im * n12 + up->ii * r1 * r2, up->im + up->ii * r2 * r2, err[0],
+                     err[1], &x[0], &x[1]))
             continue;
         }
       else

@@ -315,6 +315,133 @@ static void test_concave_interlock_stays_caught (void **state)
   carom_world_destroy (w);
 }
 
+/* Case 7: awkward geometry. Inertia against closed forms (a triangle's
+ * polar moment about its centroid is m (a^2 + b^2 + c^2) / 36), and each
+ * shape dropped on the ground comes to rest on it, finite, overlapping it
+ * less than 2 slops. */
+static double settle_on_ground (const double *xy, int n, double *depth_out)
+{
+  carom_world *w = world_with (0, -10, 0, 0.5);
+  carom_body_def d;
+  carom_body_id id;
+  double vx, vy, deepest = 0.0;
+  int step, k;
+  add_static_box (w, 0, -0.5, 40, 1);
+  carom_body_def_init (&d, sizeof d);
+  d.y = 3.0, d.angle = 0.3;
+  assert_status (carom_world_add_polygon (w, &d, xy, n, &id), CAROM_OK);
+  for (step = 0; step < 600; ++step)
+    {
+      carom_world_update (w, 1.0 / 60);
+      for (k = 0; k < carom_world_contact_count (w); ++k)
+        {
+          double nx, ny, depth;
+          carom_world_get_contact (w, k, NULL, NULL, NULL, NULL, &nx, &ny, &depth);
+          assert_near_abs (nx * nx + ny * ny, 1.0, 1e-12);
+          if (step > 300 && depth > deepest)
+            deepest = depth;
+        }
+    }
+  assert_world_finite (w);
+  carom_body_get_velocity (w, id, &vx, &vy);
+  carom_world_destroy (w);
+  *depth_out = deepest;
+  return sqrt (vx * vx + vy * vy);
+}
+
+static void test_awkward_geometry (void **state)
+{
+  const double sliver[] = {0, 0, 10, 0, 5, 0.01};                 /* aspect 1000:1 */
+  const double collinear[] = {-1, -0.5, 0, -0.5, 1, -0.5, 1, 0.5, 0, 0.5, -1, 0.5}; /* 2 x 1 box, midpoints */
+  const double near_dup[] = {-1, -0.5, 1, -0.5, 1, 0.5, 1 - 1e-9, 0.5, -1, 0.5}; /* two vertices 1e-9 apart */
+  const double short_edge[] = {-1, -0.5, 1, -0.5, 1, 0.5 - 1e-6, 1 - 1e-6, 0.5, -1, 0.5};
+  double circle64[128];
+  carom_world *w = world_with (0, 0, 0, 0);
+  carom_body_id id;
+  double m, inertia, a2, b2, c2, depth;
+  int i;
+  (void) state;
+  for (i = 0; i < 64; ++i)
+    {
+      circle64[2 * i] = cos (2 * M_PI * i / 64);
+      circle64[2 * i + 1] = sin (2 * M_PI * i / 64);
+    }
+  assert_status (carom_world_add_polygon (w, NULL, sliver, 3, &id), CAROM_OK);
+  carom_body_get_mass (w, id, &m, &inertia, NULL);
+  a2 = 100.0, b2 = 25.0 + 1e-4, c2 = 25.0 + 1e-4;
+  assert_near_rel (inertia, m * (a2 + b2 + c2) / 36.0, 1e-9);
+  assert_status (carom_world_add_polygon (w, NULL, collinear, 6, &id), CAROM_OK);
+  carom_body_get_mass (w, id, &m, &inertia, NULL);
+  assert_near_rel (inertia, m * (4.0 + 1.0) / 12.0, 1e-12); /* the 2 x 1 box, eq. 3.4 */
+  assert_status (carom_world_add_polygon (w, NULL, near_dup, 5, &id), CAROM_OK);
+  carom_body_get_mass (w, id, &m, &inertia, NULL);
+  assert_near_rel (inertia, m * 5.0 / 12.0, 1e-8);
+  assert_status (carom_world_add_polygon (w, NULL, short_edge, 5, &id), CAROM_OK);
+  carom_body_get_mass (w, id, &m, &inertia, NULL);
+  assert_near_rel (inertia, m * 5.0 / 12.0, 1e-5);
+  assert_status (carom_world_add_polygon (w, NULL, circle64, 64, &id), CAROM_OK);
+  carom_body_get_mass (w, id, &m, &inertia, NULL);
+  assert_near_rel (inertia, 0.5 * m, 0.01); /* close to a disc's m r^2 / 2 */
+  carom_world_destroy (w);
+  /* and each comes to rest on the ground: slower than 1% of its size per
+   * second, overlapping less than 2 slops (1% of its size each) */
+  assert_true (settle_on_ground (sliver, 3, &depth) < 0.1 && depth < 2 * 0.01 * 0.01);
+  assert_true (settle_on_ground (collinear, 6, &depth) < 0.01 && depth < 2 * 0.01 * 0.34);
+  assert_true (settle_on_ground (near_dup, 5, &depth) < 0.01 && depth < 2 * 0.01 * 0.34);
+  assert_true (settle_on_ground (short_edge, 5, &depth) < 0.01 && depth < 2 * 0.01 * 0.34);
+  assert_true (settle_on_ground (circle64, 64, &depth) < 0.01 && depth < 2 * 0.01 * 0.5);
+}
+
+/* Case 8: the thesis' own hard cases under its vertex-edge method, at many
+ * angles and speeds: parallel edges (fig. 3.9) and vertex on vertex
+ * (fig. 3.11). Bounds: every normal unit to 1e-12, nothing NaN, no energy
+ * gained (e = 1) beyond 1e-9, and no sticking: the boxes end apart and
+ * moving apart. */
+static void test_thesis_hard_cases_many_angles (void **state)
+{
+  int kind, k;
+  (void) state;
+  for (kind = 0; kind < 2; ++kind)
+    for (k = 0; k < 12; ++k)
+      {
+        carom_world *w = NULL;
+        carom_world_def def;
+        carom_body_def d;
+        carom_body_id a, b;
+        double speed = 0.5 + k, tilt = kind ? M_PI / 4 : 0.02 * (k - 6), e0, e1, xa, xb, va, vb;
+        int step, i;
+        carom_world_def_init (&def, sizeof def);
+        def.restitution = 1.0;
+        def.narrow_phase = CAROM_NARROW_VERTEX_EDGE;
+        assert_status (carom_world_init (&w, &def), CAROM_OK);
+        carom_body_def_init (&d, sizeof d);
+        d.x = -1.5, d.vx = speed, d.angle = kind ? M_PI / 4 + 0.01 * k : 0.0, d.y = kind ? 0.0 : 0.05 * k;
+        assert_status (carom_world_add_box (w, &d, 1, 1, &a), CAROM_OK);
+        d.x = 1.5, d.vx = -speed, d.angle = tilt, d.y = 0.0;
+        assert_status (carom_world_add_box (w, &d, 1, 1, &b), CAROM_OK);
+        e0 = world_kinetic_energy (w);
+        for (step = 0; step < 480; ++step) /* the slowest pair meets after 2 s */
+          {
+            assert_status (carom_world_update (w, 1.0 / 120), CAROM_OK);
+            for (i = 0; i < carom_world_contact_count (w); ++i)
+              {
+                double nx, ny;
+                carom_world_get_contact (w, i, NULL, NULL, NULL, NULL, &nx, &ny, NULL);
+                assert_near_abs (nx * nx + ny * ny, 1.0, 1e-12);
+              }
+          }
+        assert_world_finite (w);
+        e1 = world_kinetic_energy (w);
+        assert_true (e1 <= e0 * (1 + 1e-9));
+        carom_body_get_position (w, a, &xa, NULL);
+        carom_body_get_position (w, b, &xb, NULL);
+        carom_body_get_velocity (w, a, &va, NULL);
+        carom_body_get_velocity (w, b, &vb, NULL);
+        assert_true (xb - xa > 1.5 && vb - va > 0.0);
+        carom_world_destroy (w);
+      }
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
@@ -327,6 +454,8 @@ int main (void)
     cmocka_unit_test (test_degenerate_steps_stay_finite),
     cmocka_unit_test (test_determinism_bit_identical),
     cmocka_unit_test (test_concave_interlock_stays_caught),
+    cmocka_unit_test (test_awkward_geometry),
+    cmocka_unit_test (test_thesis_hard_cases_many_angles),
   };
   return cmocka_run_group_tests_name ("stability", tests, NULL, NULL);
 }
