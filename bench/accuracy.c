@@ -1,0 +1,372 @@
+/* carom's accuracy against its knobs: every measure of accuracy_measures.c
+ * for each setting of each knob of carom_world_def (substeps, iterations,
+ * position_correction, slop, narrow_phase) and of dt, one knob at a time
+ * from the defaults, plus the presets fast and precise; and the reference
+ * runs (pyramid and rain against a run at dt 1/120, 32 substeps,
+ * 50 iterations). Prints "acc ..." lines (accuracy.h) for
+ * bench/run-accuracy.sh.
+ *
+ * usage: accuracy [knobs=substeps,iterations,...] [reference=0|1]
+ * (ACC_DEBUG=1 in the environment prints the exact first contact of the
+ * off-centre collision case.)
+ * The defaults are read from carom_world_def_init, never restated here. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "accuracy.h"
+#include "carom.h"
+
+/* ------------------------------------------------------------ engine */
+
+typedef struct id_index {
+  carom_body_id id;
+  int index;
+} id_index;
+
+typedef struct carom_handle {
+  carom_world *world;
+  carom_body_id *ids; /* scene index -> id */
+  id_index *map;      /* sorted by id */
+  int count;
+  double dt;
+} carom_handle;
+
+static int by_id (const void *a, const void *b)
+{
+  carom_body_id x = ((const id_index *) a)->id, y = ((const id_index *) b)->id;
+  return x < y ? -1 : x > y;
+}
+
+static void carom_destroy (void *p)
+{
+  carom_handle *h = p;
+  if (!h)
+    return;
+  carom_world_destroy (h->world);
+  free (h->ids);
+  free (h->map);
+  free (h);
+}
+
+static void *carom_create (const bench_scene *s, const acc_settings *set)
+{
+  carom_world_def def;
+  carom_handle *h = calloc (1, sizeof *h);
+  int i;
+  if (!h)
+    return NULL;
+  h->ids = calloc ((size_t) s->count + 1, sizeof *h->ids);
+  h->map = calloc ((size_t) s->count + 1, sizeof *h->map);
+  h->count = s->count;
+  h->dt = set->dt;
+  if (carom_world_def_init (&def, sizeof def) != CAROM_OK)
+    {
+      carom_destroy (h);
+      return NULL;
+    }
+  def.gravity_x = s->gravity_x;
+  def.gravity_y = s->gravity_y;
+  def.restitution = s->restitution;
+  def.friction = s->friction;
+  def.substeps = set->substeps;
+  def.iterations = set->iterations;
+  def.position_correction = set->position_correction;
+  def.slop = set->slop;
+  def.narrow_phase = set->narrow_phase ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
+  if (!h->ids || !h->map || carom_world_init (&h->world, &def) != CAROM_OK)
+    {
+      carom_destroy (h);
+      return NULL;
+    }
+  for (i = 0; i < s->count; ++i)
+    {
+      const bench_body *b = &s->bodies[i];
+      carom_body_def bd;
+      carom_status st;
+      if (carom_body_def_init (&bd, sizeof bd) != CAROM_OK)
+        {
+          carom_destroy (h);
+          return NULL;
+        }
+      bd.type = b->is_static ? CAROM_STATIC : CAROM_DYNAMIC;
+      bd.x = b->x, bd.y = b->y, bd.angle = b->angle;
+      bd.vx = b->vx, bd.vy = b->vy, bd.spin = b->spin;
+      bd.density = s->density;
+      if (b->shape == BENCH_BOX)
+        st = carom_world_add_box (h->world, &bd, b->w, b->h, &h->ids[i]);
+      else if (b->shape == BENCH_REGULAR)
+        st = carom_world_add_regular (h->world, &bd, b->sides, b->side, &h->ids[i]);
+      else
+        st = carom_world_add_circle (h->world, &bd, b->radius, &h->ids[i]);
+      if (st != CAROM_OK)
+        {
+          fprintf (stderr, "accuracy: body %d of %s: %s\n", i, s->name, carom_status_string (st));
+          carom_destroy (h);
+          return NULL;
+        }
+      h->map[i].id = h->ids[i], h->map[i].index = i;
+    }
+  qsort (h->map, (size_t) s->count, sizeof *h->map, by_id);
+  return h;
+}
+
+static int carom_step (void *p)
+{
+  carom_handle *h = p;
+  return carom_world_update (h->world, h->dt) == CAROM_OK ? 0 : -1;
+}
+
+static void carom_state (void *p, int i, acc_state *o)
+{
+  carom_handle *h = p;
+  carom_body_get_position (h->world, h->ids[i], &o->x, &o->y);
+  carom_body_get_angle (h->world, h->ids[i], &o->angle);
+  carom_body_get_velocity (h->world, h->ids[i], &o->vx, &o->vy);
+  carom_body_get_spin (h->world, h->ids[i], &o->spin);
+  carom_body_get_mass (h->world, h->ids[i], &o->mass, &o->inertia, NULL);
+}
+
+static int index_of (const carom_handle *h, carom_body_id id)
+{
+  id_index key, *hit;
+  key.id = id;
+  hit = bsearch (&key, h->map, (size_t) h->count, sizeof *h->map, by_id);
+  return hit ? hit->index : -1;
+}
+
+static void carom_contacts (void *p, acc_contact_fn fn, void *user)
+{
+  carom_handle *h = p;
+  int32_t i, n = carom_world_contact_count (h->world);
+  for (i = 0; i < n; ++i)
+    {
+      carom_body_id a, b;
+      double depth;
+      if (carom_world_get_contact (h->world, i, &a, &b, NULL, NULL, NULL, NULL, &depth) == CAROM_OK)
+        fn (user, index_of (h, a), index_of (h, b), depth);
+    }
+}
+
+static const acc_engine carom_engine = {
+  "carom", "see knob and value", carom_create, carom_step, carom_state, carom_contacts, carom_destroy,
+};
+
+/* ------------------------------------------------------------ sweep */
+
+static int settings_default (acc_settings *set)
+{
+  carom_world_def def;
+  memset (set, 0, sizeof *set);
+  if (carom_world_def_init (&def, sizeof def) != CAROM_OK)
+    return -1;
+  strcpy (set->knob, "default");
+  strcpy (set->value, "balanced");
+  set->substeps = def.substeps;
+  set->iterations = def.iterations;
+  set->position_correction = def.position_correction;
+  set->slop = def.slop;
+  set->narrow_phase = def.narrow_phase == CAROM_NARROW_VERTEX_EDGE;
+  set->dt = 1.0 / 60.0;
+  return 0;
+}
+
+#define N_MEASURES 10
+
+typedef struct sweep {
+  acc_settings def;
+  acc_result def_results[N_MEASURES];
+  double *ref[2]; /* pyramid, rain */
+  int with_reference;
+  int failures;
+} sweep;
+
+static const char *const ref_scenes[2] = { "pyramid", "rain" };
+
+/* Run every measure for `set`; keep the results in `keep` (may be NULL). */
+static void run_setting (sweep *w, const acc_settings *set, acc_result *keep)
+{
+  int (*const measures[]) (const acc_engine *, const acc_settings *, acc_result *) = {
+    acc_collision, acc_projectile, acc_bounce, acc_gas, acc_momentum, acc_pyramid, acc_rain, acc_tunnel,
+  };
+  int i, n = (int) (sizeof measures / sizeof measures[0]);
+  for (i = 0; i < N_MEASURES; ++i)
+    {
+      acc_result r;
+      int rc;
+      if (i < n)
+        rc = measures[i](&carom_engine, set, &r);
+      else if (w->with_reference)
+        rc = acc_reference (&carom_engine, set, ref_scenes[i - n], w->ref[i - n], &r);
+      else
+        continue;
+      if (rc < 0)
+        {
+          r.ok = 0;
+          w->failures++;
+        }
+      acc_print (&carom_engine, set, &r, NULL);
+      if (keep)
+        keep[i] = r;
+    }
+}
+
+/* The default's lines again, labelled as one point of a knob's curve. */
+static void repeat_default (const sweep *w, const acc_settings *set)
+{
+  int i;
+  for (i = 0; i < N_MEASURES; ++i)
+    if (w->def_results[i].measure)
+      acc_print (&carom_engine, set, &w->def_results[i], "dup=1");
+}
+
+static int wanted (const char *list, const char *knob)
+{
+  const char *p = list;
+  size_t k = strlen (knob);
+  if (!list)
+    return 1;
+  while ((p = strstr (p, knob)))
+    {
+      if ((p == list || p[-1] == ',') && (p[k] == ',' || p[k] == '\0'))
+        return 1;
+      p += k;
+    }
+  return 0;
+}
+
+typedef enum knob_id { K_SUBSTEPS, K_ITERATIONS, K_CORRECTION, K_SLOP, K_NARROW, K_DT } knob_id;
+
+static void knob (sweep *w, const char *only, knob_id k, const char *name, const double *values, int n)
+{
+  int i;
+  if (!wanted (only, name))
+    return;
+  for (i = 0; i < n; ++i)
+    {
+      acc_settings set = w->def;
+      int same;
+      strcpy (set.knob, name);
+      switch (k)
+        {
+        case K_SUBSTEPS:
+          set.substeps = (int) values[i];
+          snprintf (set.value, sizeof set.value, "%d", set.substeps);
+          break;
+        case K_ITERATIONS:
+          set.iterations = (int) values[i];
+          snprintf (set.value, sizeof set.value, "%d", set.iterations);
+          break;
+        case K_CORRECTION:
+          set.position_correction = values[i];
+          snprintf (set.value, sizeof set.value, "%g", values[i]);
+          break;
+        case K_SLOP:
+          set.slop = values[i];
+          snprintf (set.value, sizeof set.value, "%g", values[i]);
+          break;
+        case K_NARROW:
+          set.narrow_phase = (int) values[i];
+          strcpy (set.value, set.narrow_phase ? "vertex-edge" : "SAT");
+          break;
+        case K_DT:
+          set.dt = 1.0 / values[i];
+          snprintf (set.value, sizeof set.value, "1/%g", values[i]);
+          break;
+        }
+      same = set.substeps == w->def.substeps && set.iterations == w->def.iterations
+             && set.position_correction == w->def.position_correction && set.slop == w->def.slop
+             && set.narrow_phase == w->def.narrow_phase && set.dt == w->def.dt;
+      fprintf (stderr, "accuracy: %s=%s\n", set.knob, set.value);
+      if (same)
+        repeat_default (w, &set);
+      else
+        run_setting (w, &set, NULL);
+    }
+}
+
+static void preset (sweep *w, const char *only, const char *name, int substeps, int iterations)
+{
+  acc_settings set = w->def;
+  if (!wanted (only, "preset"))
+    return;
+  strcpy (set.knob, "preset");
+  strcpy (set.value, name);
+  set.substeps = substeps, set.iterations = iterations;
+  fprintf (stderr, "accuracy: preset %s\n", name);
+  run_setting (w, &set, NULL);
+}
+
+int main (int argc, char **argv)
+{
+  static const double substeps[] = { 1, 2, 4, 8 }, iterations[] = { 2, 4, 8, 16, 32 },
+                      correction[] = { 0.05, 0.1, 0.2, 0.4, 0.8 }, slop[] = { 0.001, 0.005, 0.01, 0.02 },
+                      narrow[] = { 0, 1 }, rate[] = { 30, 60, 120, 240 };
+  const char *only = NULL;
+  sweep w;
+  int i;
+  memset (&w, 0, sizeof w);
+  w.with_reference = 1;
+  for (i = 1; i < argc; ++i)
+    if (strncmp (argv[i], "knobs=", 6) == 0)
+      only = argv[i] + 6;
+    else if (strncmp (argv[i], "reference=", 10) == 0)
+      w.with_reference = atoi (argv[i] + 10);
+    else
+      {
+        fprintf (stderr, "usage: %s [knobs=substeps,iterations,position_correction,slop,narrow_phase,dt,preset] "
+                         "[reference=0|1]\n", argv[0]);
+        return 2;
+      }
+  if (settings_default (&w.def) < 0)
+    {
+      fprintf (stderr, "accuracy: carom_world_def_init failed\n");
+      return 1;
+    }
+  printf ("defaults substeps=%d iterations=%d position_correction=%g slop=%g narrow_phase=%s dt=1/60\n",
+          w.def.substeps, w.def.iterations, w.def.position_correction, w.def.slop,
+          w.def.narrow_phase ? "vertex-edge" : "SAT");
+
+  if (w.with_reference)
+    {
+      /* the reference, and a check of it: the same at half its resolution */
+      acc_settings ref = w.def, half;
+      strcpy (ref.knob, "reference");
+      strcpy (ref.value, "32x50@1/120");
+      ref.dt = 1.0 / 120.0, ref.substeps = 32, ref.iterations = 50;
+      half = ref;
+      strcpy (half.value, "16x50@1/120");
+      half.substeps = 16;
+      for (i = 0; i < 2; ++i)
+        {
+          acc_result r;
+          int count;
+          fprintf (stderr, "accuracy: reference %s\n", ref_scenes[i]);
+          if (acc_trajectory (&carom_engine, &ref, ref_scenes[i], &w.ref[i], &count) < 0)
+            {
+              fprintf (stderr, "accuracy: the reference run of %s failed\n", ref_scenes[i]);
+              return 1;
+            }
+          if (acc_reference (&carom_engine, &half, ref_scenes[i], w.ref[i], &r) < 0)
+            w.failures++;
+          acc_print (&carom_engine, &half, &r, NULL);
+        }
+    }
+
+  fprintf (stderr, "accuracy: defaults\n");
+  run_setting (&w, &w.def, w.def_results);
+  knob (&w, only, K_SUBSTEPS, "substeps", substeps, 4);
+  knob (&w, only, K_ITERATIONS, "iterations", iterations, 5);
+  knob (&w, only, K_CORRECTION, "position_correction", correction, 5);
+  knob (&w, only, K_SLOP, "slop", slop, 4);
+  knob (&w, only, K_NARROW, "narrow_phase", narrow, 2);
+  knob (&w, only, K_DT, "dt", rate, 4);
+  preset (&w, only, "fast", 1, 4);
+  preset (&w, only, "precise", 4, 8);
+  free (w.ref[0]);
+  free (w.ref[1]);
+  if (w.failures)
+    fprintf (stderr, "accuracy: %d measures failed\n", w.failures);
+  return w.failures ? 1 : 0;
+}

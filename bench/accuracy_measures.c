@@ -1,0 +1,851 @@
+/* The accuracy measures (see accuracy.h), engine-neutral: every engine is
+ * measured by this code through its acc_engine table. */
+#include "accuracy.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define ACC_PI 3.14159265358979323846
+
+/* ------------------------------------------------------------ helpers */
+
+double acc_body_size (const bench_body *b)
+{
+  if (b->shape == BENCH_BOX)
+    return b->w > b->h ? b->w : b->h;
+  return 2.0 * b->radius;
+}
+
+static int scene_alloc (bench_scene *s, const char *name, int count)
+{
+  memset (s, 0, sizeof *s);
+  strncpy (s->name, name, sizeof s->name - 1);
+  s->density = 1.0;
+  s->top = -1;
+  s->bodies = calloc ((size_t) count, sizeof *s->bodies);
+  s->count = 0;
+  return s->bodies ? 0 : -1;
+}
+
+static bench_body *scene_add (bench_scene *s, bench_shape shape, double a, double b, int is_static)
+{
+  bench_body *p = &s->bodies[s->count++];
+  memset (p, 0, sizeof *p);
+  p->shape = shape;
+  p->is_static = is_static;
+  if (shape == BENCH_BOX)
+    {
+      p->w = a, p->h = b;
+      p->radius = 0.5 * sqrt (a * a + b * b);
+    }
+  else if (shape == BENCH_REGULAR)
+    {
+      p->sides = (int) b;
+      p->radius = a;
+      p->side = 2.0 * a * sin (ACC_PI / p->sides);
+    }
+  else
+    p->radius = a;
+  if (!is_static)
+    s->dynamic_count++;
+  return p;
+}
+
+static int steps_for (double seconds, const acc_settings *set)
+{
+  return (int) floor (seconds / set->dt + 0.5);
+}
+
+/* A world being stepped, with the wall time of its step calls. */
+typedef struct acc_run {
+  const acc_engine *e;
+  const acc_settings *set;
+  void *w;
+  double seconds;
+  int steps;
+} acc_run;
+
+static int run_begin (acc_run *r, const acc_engine *e, const acc_settings *set, const bench_scene *s)
+{
+  memset (r, 0, sizeof *r);
+  r->e = e, r->set = set;
+  r->w = e->create (s, set);
+  return r->w ? 0 : -1;
+}
+
+static int run_step (acc_run *r)
+{
+  double t0 = bench_now ();
+  int rc = r->e->step (r->w);
+  r->seconds += bench_now () - t0;
+  r->steps++;
+  return rc;
+}
+
+static void run_end (acc_run *r, acc_result *res)
+{
+  if (r->steps > 0)
+    {
+      res->ms_step = 1e3 * r->seconds / r->steps;
+      res->ms_frame = res->ms_step * (1.0 / 60.0) / r->set->dt;
+    }
+  if (r->w)
+    r->e->destroy (r->w);
+  r->w = NULL;
+}
+
+static void result_init (acc_result *r, const char *measure)
+{
+  memset (r, 0, sizeof *r);
+  r->measure = measure;
+  r->ok = 1;
+}
+
+static void result_put (acc_result *r, const char *key, double value)
+{
+  if (r->nkeys < ACC_MAX_KEYS)
+    {
+      r->keys[r->nkeys] = key;
+      r->values[r->nkeys++] = value;
+    }
+}
+
+void acc_print (const acc_engine *e, const acc_settings *set, const acc_result *r, const char *extra)
+{
+  int i;
+  printf ("acc engine=%s knob=%s value=%s measure=%s ms_step=%.5f ms_frame=%.5f", e->name, set->knob, set->value,
+          r->measure, r->ms_step, r->ms_frame);
+  for (i = 0; i < r->nkeys; ++i)
+    printf (" %s=%.6g", r->keys[i], r->values[i]);
+  if (!r->ok)
+    printf (" failed=1");
+  if (extra)
+    printf (" %s", extra);
+  printf ("\n");
+  fflush (stdout);
+}
+
+/* Kinetic energy, linear momentum and angular momentum about the origin of
+ * the dynamic bodies. */
+static void totals (const acc_run *r, const bench_scene *s, double *ke, double *px, double *py, double *l,
+                    double *scale_p, double *scale_l)
+{
+  int i;
+  double k = 0, x = 0, y = 0, a = 0, sp = 0, sl = 0;
+  for (i = 0; i < s->count; ++i)
+    {
+      acc_state st;
+      if (s->bodies[i].is_static)
+        continue;
+      r->e->state (r->w, i, &st);
+      k += bench_kinetic (st.mass, st.inertia, st.vx, st.vy, st.spin);
+      x += st.mass * st.vx, y += st.mass * st.vy;
+      a += st.mass * (st.x * st.vy - st.y * st.vx) + st.inertia * st.spin;
+      sp += st.mass * hypot (st.vx, st.vy);
+      sl += st.mass * fabs (st.x * st.vy - st.y * st.vx) + st.inertia * fabs (st.spin);
+    }
+  if (ke)
+    *ke = k;
+  if (px)
+    *px = x, *py = y;
+  if (l)
+    *l = a;
+  if (scale_p)
+    *scale_p = sp;
+  if (scale_l)
+    *scale_l = sl;
+}
+
+/* Penetration statistics: depth over the smaller dynamic body's size. */
+#define PEN_BINS 2000 /* of 0.001 body size each; the last one holds the rest */
+typedef struct pen_stats {
+  const bench_scene *s;
+  double max, sum;
+  long n;
+  long hist[PEN_BINS];
+} pen_stats;
+
+/* The depth below which 99% of the touching points lie (to 0.001). */
+static double pen_p99 (const pen_stats *p)
+{
+  long seen = 0;
+  int i;
+  for (i = 0; i < PEN_BINS; ++i)
+    if ((seen += p->hist[i]) >= 0.99 * p->n)
+      return (i + 1) * 0.001;
+  return PEN_BINS * 0.001;
+}
+
+static void pen_add (void *user, int a, int b, double depth)
+{
+  pen_stats *p = user;
+  double size = 1e300, rel;
+  if (depth < 0.0)
+    return;
+  if (a >= 0 && !p->s->bodies[a].is_static)
+    size = acc_body_size (&p->s->bodies[a]);
+  if (b >= 0 && !p->s->bodies[b].is_static && acc_body_size (&p->s->bodies[b]) < size)
+    size = acc_body_size (&p->s->bodies[b]);
+  if (size == 1e300)
+    return;
+  rel = depth / size;
+  if (rel > p->max)
+    p->max = rel;
+  p->sum += rel;
+  p->n++;
+  p->hist[rel < 0.001 * (PEN_BINS - 1) ? (int) (rel / 0.001) : PEN_BINS - 1]++;
+}
+
+static int count_outside (const acc_run *r, const bench_scene *s)
+{
+  int i, n = 0;
+  for (i = 0; i < s->count; ++i)
+    {
+      acc_state st;
+      if (s->bodies[i].is_static)
+        continue;
+      r->e->state (r->w, i, &st);
+      n += bench_outside (s, st.x, st.y) || !isfinite (st.x) || !isfinite (st.y);
+    }
+  return n;
+}
+
+/* ------------------------------------------------ two-body collision */
+
+/* World vertices of polygon body b at time t of free flight (no gravity). */
+static int vertices_at (const bench_body *b, double t, double *xy)
+{
+  double local[2 * 16], c, s, x = b->x + b->vx * t, y = b->y + b->vy * t, a = b->angle + b->spin * t;
+  int i, n = bench_body_vertices (b, local, 16);
+  c = cos (a), s = sin (a);
+  for (i = 0; i < n; ++i)
+    {
+      xy[2 * i] = x + c * local[2 * i] - s * local[2 * i + 1];
+      xy[2 * i + 1] = y + s * local[2 * i] + c * local[2 * i + 1];
+    }
+  return n;
+}
+
+/* Signed distance from (px, py) to the convex CCW polygon's edge i's line,
+ * positive outside. */
+static double edge_distance (const double *xy, int n, int i, double px, double py, double *nx, double *ny)
+{
+  int j = (i + 1) % n;
+  double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1], len = hypot (ex, ey);
+  *nx = ey / len, *ny = -ex / len;
+  return (px - xy[2 * i]) * *nx + (py - xy[2 * i + 1]) * *ny;
+}
+
+/* Depth of (px, py) inside the polygon (> 0 inside), and the outward normal
+ * of the nearest edge. */
+static double inside_depth (const double *xy, int n, double px, double py, double *nx, double *ny)
+{
+  double best = -1e300;
+  int i;
+  for (i = 0; i < n; ++i)
+    {
+      double ex, ey, d = edge_distance (xy, n, i, px, py, &ex, &ey);
+      if (-d < -best || i == 0)
+        {
+          best = d;
+          *nx = ex, *ny = ey;
+        }
+    }
+  return -best;
+}
+
+/* Deepest vertex of one polygon inside the other at time t: > 0 when they
+ * overlap. Sets the vertex (px, py) and the normal from a to b. */
+static double overlap_at (const bench_body *a, const bench_body *b, double t, double *px, double *py, double *nx,
+                          double *ny)
+{
+  double va[32], vb[32], best = -1e300;
+  int na = vertices_at (a, t, va), nb = vertices_at (b, t, vb), i;
+  for (i = 0; i < na; ++i)
+    {
+      double mx = 0.0, my = 0.0, d = inside_depth (vb, nb, va[2 * i], va[2 * i + 1], &mx, &my);
+      if (d > best)
+        best = d, *px = va[2 * i], *py = va[2 * i + 1], *nx = -mx, *ny = -my;
+    }
+  for (i = 0; i < nb; ++i)
+    {
+      double mx = 0.0, my = 0.0, d = inside_depth (va, na, vb[2 * i], vb[2 * i + 1], &mx, &my);
+      if (d > best)
+        best = d, *px = vb[2 * i], *py = vb[2 * i + 1], *nx = mx, *ny = my;
+    }
+  return best;
+}
+
+/* The exact eq. 3.23 outcome of the first contact of two convex polygons in
+ * free flight (e, no friction): the time of first contact by scanning and
+ * bisection, its point and normal, then the impulse. Returns -1 if they never
+ * meet within `horizon`, or meet again afterwards (then the closed form does
+ * not describe the run). */
+static int exact_collision (const bench_scene *s, double e, double horizon, double out[6])
+{
+  const bench_body *a = &s->bodies[0], *b = &s->bodies[1];
+  double lo = 0.0, hi = -1.0, t, px, py, nx, ny, ma, mb, ia, ib, rax, ray, rbx, rby, vpx, vpy, vn, ran, rbn, j;
+  int k;
+  for (t = 0.0; t <= horizon; t += 1e-4)
+    {
+      if (overlap_at (a, b, t, &px, &py, &nx, &ny) > 0.0)
+        {
+          hi = t;
+          break;
+        }
+      lo = t;
+    }
+  if (hi < 0.0)
+    {
+      if (getenv ("ACC_DEBUG"))
+        fprintf (stderr, "exact_collision: no contact\n");
+      return -1;
+    }
+  for (k = 0; k < 60; ++k)
+    {
+      double mid = 0.5 * (lo + hi);
+      if (overlap_at (a, b, mid, &px, &py, &nx, &ny) > 0.0)
+        hi = mid;
+      else
+        lo = mid;
+    }
+  overlap_at (a, b, hi, &px, &py, &nx, &ny);
+  ma = s->density * bench_body_area (a), mb = s->density * bench_body_area (b);
+  ia = s->density * bench_body_inertia (a), ib = s->density * bench_body_inertia (b);
+  rax = px - (a->x + a->vx * hi), ray = py - (a->y + a->vy * hi);
+  rbx = px - (b->x + b->vx * hi), rby = py - (b->y + b->vy * hi);
+  /* v_p = v_bp - v_ap, omega x r = (-omega r_y, omega r_x) */
+  vpx = (b->vx - b->spin * rby) - (a->vx - a->spin * ray);
+  vpy = (b->vy + b->spin * rbx) - (a->vy + a->spin * rax);
+  vn = vpx * nx + vpy * ny;
+  if (getenv ("ACC_DEBUG"))
+    fprintf (stderr, "exact_collision: t=%.6f p=(%.4f, %.4f) n=(%.4f, %.4f) vn=%.4f\n", hi, px, py, nx, ny, vn);
+  if (vn >= 0.0)
+    return -1;
+  ran = rax * ny - ray * nx, rbn = rbx * ny - rby * nx;
+  j = -(1.0 + e) * vn / (1.0 / ma + 1.0 / mb + ran * ran / ia + rbn * rbn / ib);
+  out[0] = a->vx - j * nx / ma, out[1] = a->vy - j * ny / ma, out[2] = a->spin - ran * j / ia;
+  out[3] = b->vx + j * nx / mb, out[4] = b->vy + j * ny / mb, out[5] = b->spin + rbn * j / ib;
+  /* no second contact: fly the bodies on from the impact with the new
+   * velocities */
+  {
+    bench_body a2 = *a, b2 = *b;
+    a2.x += a->vx * hi, a2.y += a->vy * hi, a2.angle += a->spin * hi;
+    b2.x += b->vx * hi, b2.y += b->vy * hi, b2.angle += b->spin * hi;
+    a2.vx = out[0], a2.vy = out[1], a2.spin = out[2];
+    b2.vx = out[3], b2.vy = out[4], b2.spin = out[5];
+    for (t = 1e-3; t < horizon; t += 1e-3)
+      if (overlap_at (&a2, &b2, t, &px, &py, &nx, &ny) > 0.0)
+        {
+          if (getenv ("ACC_DEBUG"))
+            fprintf (stderr, "exact_collision: second contact at %.4f after\n", t);
+          return -1;
+        }
+  }
+  return 0;
+}
+
+/* Error of the two bodies' final velocities against `want` (vx, vy, spin of
+ * a then b): sqrt(sum |dv|^2 + (rho dspin)^2) over the closing speed, rho
+ * the radius of gyration. */
+static double velocity_error (const acc_run *r, const bench_scene *s, const double want[6])
+{
+  double sum = 0.0, closing = hypot (s->bodies[1].vx - s->bodies[0].vx, s->bodies[1].vy - s->bodies[0].vy);
+  int i;
+  for (i = 0; i < 2; ++i)
+    {
+      acc_state st;
+      double rho;
+      r->e->state (r->w, i, &st);
+      rho = sqrt (st.inertia / st.mass);
+      sum += pow (st.vx - want[3 * i], 2) + pow (st.vy - want[3 * i + 1], 2)
+             + pow (rho * (st.spin - want[3 * i + 2]), 2);
+    }
+  return sqrt (sum) / closing;
+}
+
+static int run_seconds (acc_run *r, double seconds)
+{
+  int k, n = steps_for (seconds, r->set);
+  for (k = 0; k < n; ++k)
+    if (run_step (r) != 0)
+      return -1;
+  return 0;
+}
+
+/* Head-on: two equal 1 x 1 boxes face to face swap velocities. Off-centre:
+ * a spinning 1 x 0.6 box hits a spinning pentagon with a corner, against
+ * the exact impulse at the exact first contact. e = 1, no friction, no
+ * gravity. */
+int acc_collision (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  bench_scene s;
+  bench_body *p;
+  acc_run r;
+  double want[6], ke0, ke1, headon, offcentre;
+  int rc = 0;
+  result_init (res, "collision");
+
+  if (scene_alloc (&s, "headon", 2) < 0)
+    return -1;
+  s.restitution = 1.0;
+  p = scene_add (&s, BENCH_BOX, 1.0, 1.0, 0);
+  p->x = -1.5, p->vx = 3.0;
+  p = scene_add (&s, BENCH_BOX, 1.0, 1.0, 0);
+  p->x = 1.5, p->vx = -1.0;
+  want[0] = -1.0, want[1] = 0.0, want[2] = 0.0, want[3] = 3.0, want[4] = 0.0, want[5] = 0.0;
+  if (run_begin (&r, e, set, &s) < 0 || run_seconds (&r, 1.0) < 0)
+    rc = -1;
+  headon = rc ? NAN : velocity_error (&r, &s, want);
+  run_end (&r, res);
+  bench_scene_free (&s);
+
+  if (scene_alloc (&s, "offcentre", 2) < 0)
+    return -1;
+  s.restitution = 1.0;
+  p = scene_add (&s, BENCH_BOX, 1.0, 0.6, 0);
+  p->x = -1.5, p->y = 0.3, p->angle = 0.5, p->vx = 4.0, p->spin = -1.5;
+  p = scene_add (&s, BENCH_REGULAR, 0.5, 5, 0);
+  p->x = 1.0, p->y = -0.1, p->angle = 0.2, p->vx = -2.0, p->vy = 0.5, p->spin = 1.0;
+  if (exact_collision (&s, 1.0, 1.5, want) < 0)
+    {
+      fprintf (stderr, "accuracy: the off-centre collision is not a single contact; change its set-up\n");
+      bench_scene_free (&s);
+      return -1;
+    }
+  if (run_begin (&r, e, set, &s) < 0)
+    rc = -1;
+  else
+    {
+      totals (&r, &s, &ke0, NULL, NULL, NULL, NULL, NULL);
+      if (run_seconds (&r, 1.5) < 0)
+        rc = -1;
+      totals (&r, &s, &ke1, NULL, NULL, NULL, NULL, NULL);
+    }
+  offcentre = rc ? NAN : velocity_error (&r, &s, want);
+  run_end (&r, res);
+  bench_scene_free (&s);
+  result_put (res, "headon_err", headon);
+  result_put (res, "offcentre_err", offcentre);
+  result_put (res, "energy_change", rc ? NAN : ke1 / ke0 - 1.0);
+  res->ok = rc == 0;
+  return rc;
+}
+
+/* ------------------------------------------------ projectile, bounce */
+
+/* A 1 x 1 box thrown at (3, 8) under g = -10, no ground: its position
+ * after 2 s against x0 + v0 t + g t^2 / 2, over its size. */
+int acc_projectile (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  bench_scene s;
+  bench_body *p;
+  acc_run r;
+  acc_state st;
+  double t;
+  int rc = 0;
+  result_init (res, "projectile");
+  if (scene_alloc (&s, "projectile", 1) < 0)
+    return -1;
+  s.gravity_y = -10.0;
+  p = scene_add (&s, BENCH_BOX, 1.0, 1.0, 0);
+  p->vx = 3.0, p->vy = 8.0;
+  if (run_begin (&r, e, set, &s) < 0 || run_seconds (&r, 2.0) < 0)
+    rc = -1;
+  if (!rc)
+    {
+      t = r.steps * set->dt;
+      e->state (r.w, 0, &st);
+      result_put (res, "err", hypot (st.x - 3.0 * t, st.y - (8.0 * t - 5.0 * t * t)));
+    }
+  run_end (&r, res);
+  bench_scene_free (&s);
+  res->ok = rc == 0;
+  return rc;
+}
+
+/* Drop `shape` (circle of diameter 1 or 1 x 1 box) from h0 = 2 (its bottom
+ * above the ground) with e = 0.5: height of the bottom at the top of the
+ * first bounce. The top is taken from the last state still rising, as
+ * y + vy^2 / 2g (exact for free flight), so sampling by steps adds no error. */
+static int bounce_height (const acc_engine *e, const acc_settings *set, bench_shape shape, double *height)
+{
+  bench_scene s;
+  bench_body *p;
+  acc_run r;
+  const double h0 = 2.0, g = 10.0;
+  int rc = -1, k, n = steps_for (3.0, set), fell = 0;
+  if (scene_alloc (&s, "bounce", 2) < 0)
+    return -1;
+  s.gravity_y = -g;
+  s.restitution = 0.5;
+  p = scene_add (&s, BENCH_BOX, 20.0, 1.0, 1);
+  p->y = -0.5;
+  p = shape == BENCH_BOX ? scene_add (&s, BENCH_BOX, 1.0, 1.0, 0) : scene_add (&s, BENCH_CIRCLE, 0.5, 0, 0);
+  p->y = 0.5 + h0;
+  *height = NAN;
+  if (run_begin (&r, e, set, &s) == 0)
+    for (k = 0; k < n; ++k)
+      {
+        acc_state st;
+        if (run_step (&r) != 0)
+          break;
+        e->state (r.w, 1, &st);
+        if (st.vy < -1e-9)
+          {
+            if (fell == 2) /* falling again: *height holds the top */
+              {
+                rc = 0;
+                break;
+              }
+            fell = 1;
+          }
+        else if (fell && st.vy > 1e-9)
+          {
+            fell = 2;
+            *height = st.y - 0.5 + st.vy * st.vy / (2.0 * g);
+          }
+      }
+  run_end (&r, &(acc_result){ 0 });
+  bench_scene_free (&s);
+  return rc;
+}
+
+int acc_bounce (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  const double want = 0.5 * 0.5 * 2.0;
+  double hc, hb;
+  int rc;
+  result_init (res, "bounce");
+  rc = bounce_height (e, set, BENCH_CIRCLE, &hc);
+  rc |= bounce_height (e, set, BENCH_BOX, &hb);
+  result_put (res, "circle_height", hc);
+  result_put (res, "circle_err", hc / want - 1.0);
+  result_put (res, "box_height", hb);
+  result_put (res, "box_err", hb / want - 1.0);
+  /* cost: one more run, timed, of the box */
+  {
+    bench_scene s;
+    bench_body *p;
+    acc_run r;
+    if (scene_alloc (&s, "bounce", 2) == 0)
+      {
+        s.gravity_y = -10.0, s.restitution = 0.5;
+        p = scene_add (&s, BENCH_BOX, 20.0, 1.0, 1);
+        p->y = -0.5;
+        p = scene_add (&s, BENCH_BOX, 1.0, 1.0, 0);
+        p->y = 2.5;
+        if (run_begin (&r, e, set, &s) == 0)
+          run_seconds (&r, 3.0);
+        run_end (&r, res);
+        bench_scene_free (&s);
+      }
+  }
+  res->ok = rc == 0;
+  return rc;
+}
+
+/* ------------------------------------------------ conservation */
+
+/* The bench's gas scene (e = 1, no friction, closed walls): kinetic energy
+ * at the end over the start, minus 1, after ACC_GAS_SECONDS (2000 steps at
+ * 1/60). */
+int acc_gas (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  bench_scene s;
+  acc_run r;
+  double e0 = 0.0, e1 = 0.0;
+  int rc = 0;
+  result_init (res, "gas");
+  if (bench_scene_make (&s, "gas", ACC_GAS_BODIES) < 0)
+    return -1;
+  if (run_begin (&r, e, set, &s) < 0)
+    rc = -1;
+  else
+    {
+      totals (&r, &s, &e0, NULL, NULL, NULL, NULL, NULL);
+      rc = run_seconds (&r, ACC_GAS_SECONDS);
+      totals (&r, &s, &e1, NULL, NULL, NULL, NULL, NULL);
+      result_put (res, "energy_drift", e1 / e0 - 1.0);
+      result_put (res, "escaped", count_outside (&r, &s));
+    }
+  run_end (&r, res);
+  bench_scene_free (&s);
+  res->ok = rc == 0;
+  return rc;
+}
+
+/* A closed world without walls: the gas scene's polygons without its walls,
+ * their velocities turned towards the centre (v - 0.4 x) so that they pile
+ * up and collide many times; e = 0.5, friction 0.3, no gravity. Linear and
+ * angular momentum (about the origin) at the end against the start, over
+ * sum m |v| and sum (m |x cross v| + I |spin|) at the start. */
+int acc_momentum (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  bench_scene gas, s;
+  acc_run r;
+  double px0, py0, l0, px1, py1, l1, sp, sl;
+  int i, rc = 0;
+  result_init (res, "momentum");
+  if (bench_scene_make (&gas, "gas", ACC_MOMENTUM_BODIES) < 0)
+    return -1;
+  if (scene_alloc (&s, "momentum", gas.count) < 0)
+    {
+      bench_scene_free (&gas);
+      return -1;
+    }
+  s.restitution = 0.5, s.friction = 0.3;
+  for (i = 0; i < gas.count; ++i)
+    if (!gas.bodies[i].is_static)
+      {
+        bench_body *b = &s.bodies[s.count++];
+        *b = gas.bodies[i];
+        b->vx -= 0.4 * b->x, b->vy -= 0.4 * b->y;
+        b->spin = 0.5 * b->vx;
+        s.dynamic_count++;
+      }
+  s.in_lo_x = s.in_lo_y = -1e300, s.in_hi_x = s.in_hi_y = 1e300;
+  bench_scene_free (&gas);
+  if (run_begin (&r, e, set, &s) < 0)
+    rc = -1;
+  else
+    {
+      totals (&r, &s, NULL, &px0, &py0, &l0, &sp, &sl);
+      rc = run_seconds (&r, ACC_MOMENTUM_SECONDS);
+      totals (&r, &s, NULL, &px1, &py1, &l1, NULL, NULL);
+      result_put (res, "p_err", hypot (px1 - px0, py1 - py0) / sp);
+      result_put (res, "l_err", fabs (l1 - l0) / sl);
+    }
+  run_end (&r, res);
+  bench_scene_free (&s);
+  res->ok = rc == 0;
+  return rc;
+}
+
+/* ------------------------------------------------ contacts */
+
+static int run_penetration (acc_run *r, const bench_scene *s, double seconds, pen_stats *pen)
+{
+  int k, n = steps_for (seconds, r->set);
+  memset (pen, 0, sizeof *pen);
+  pen->s = s;
+  for (k = 0; k < n; ++k)
+    {
+      if (run_step (r) != 0)
+        return -1;
+      r->e->contacts (r->w, pen_add, pen);
+    }
+  return 0;
+}
+
+/* The bench's pyramid (210 boxes), 10 s: penetration over every step, and
+ * how far the top box sank (down is positive) and moved, over its size. */
+int acc_pyramid (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  bench_scene s;
+  acc_run r;
+  pen_stats pen;
+  acc_state a, b;
+  int rc = 0;
+  result_init (res, "pyramid");
+  if (bench_scene_make (&s, "pyramid", ACC_PYRAMID_BODIES) < 0)
+    return -1;
+  if (run_begin (&r, e, set, &s) < 0)
+    rc = -1;
+  else
+    {
+      double size = acc_body_size (&s.bodies[s.top]);
+      e->state (r.w, s.top, &a);
+      rc = run_penetration (&r, &s, ACC_PYRAMID_SECONDS, &pen);
+      e->state (r.w, s.top, &b);
+      result_put (res, "pen_max", pen.max);
+      result_put (res, "pen_mean", pen.n ? pen.sum / pen.n : 0.0);
+      result_put (res, "pen_p99", pen_p99 (&pen));
+      result_put (res, "top_sink", (a.y - b.y) / size);
+      result_put (res, "top_drift", hypot (b.x - a.x, b.y - a.y) / size);
+      result_put (res, "escaped", count_outside (&r, &s));
+    }
+  run_end (&r, res);
+  bench_scene_free (&s);
+  res->ok = rc == 0;
+  return rc;
+}
+
+/* The bench's rain with ACC_RAIN_BODIES polygons for ACC_RAIN_SECONDS (every
+ * row has landed by then): penetration over every step. */
+int acc_rain (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  bench_scene s;
+  acc_run r;
+  pen_stats pen;
+  int rc = 0;
+  result_init (res, "rain");
+  if (bench_scene_make (&s, "rain", ACC_RAIN_BODIES) < 0)
+    return -1;
+  if (run_begin (&r, e, set, &s) < 0)
+    rc = -1;
+  else
+    {
+      rc = run_penetration (&r, &s, ACC_RAIN_SECONDS, &pen);
+      result_put (res, "pen_max", pen.max);
+      result_put (res, "pen_mean", pen.n ? pen.sum / pen.n : 0.0);
+      result_put (res, "pen_p99", pen_p99 (&pen));
+      result_put (res, "escaped", count_outside (&r, &s));
+    }
+  run_end (&r, res);
+  bench_scene_free (&s);
+  res->ok = rc == 0;
+  return rc;
+}
+
+/* 20 circles (diameter 0.1 to 0.2) and 20 boxes (0.1 x 0.1, random angle)
+ * at 50 to 300 m/s against a static wall 0.1 thick (at 300 m/s a body moves
+ * 5 m, 50 wall thicknesses, per 1/60 s step). e = 0, no friction, no
+ * gravity, 0.5 s. A body whose centre ends beyond the wall tunnelled. */
+int acc_tunnel (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  bench_scene s;
+  bench_rng rng;
+  acc_run r;
+  bench_body *p;
+  int i, rc = 0, circles = 0, boxes = 0;
+  result_init (res, "tunnel");
+  if (scene_alloc (&s, "tunnel", 41) < 0)
+    return -1;
+  bench_rng_seed (&rng, 0x74756e6e656cULL);
+  p = scene_add (&s, BENCH_BOX, 0.1, 60.0, 1);
+  for (i = 0; i < 40; ++i)
+    {
+      p = i % 2 ? scene_add (&s, BENCH_BOX, 0.1, 0.1, 0)
+                : scene_add (&s, BENCH_CIRCLE, bench_rng_range (&rng, 0.05, 0.1), 0, 0);
+      p->x = -10.0 - bench_rng_range (&rng, 0.0, 5.0);
+      p->y = -19.5 + i;
+      p->angle = bench_rng_range (&rng, 0.0, ACC_PI);
+      p->vx = 50.0 + 250.0 * i / 39.0;
+    }
+  if (run_begin (&r, e, set, &s) < 0 || run_seconds (&r, 0.5) < 0)
+    rc = -1;
+  else
+    for (i = 1; i < s.count; ++i)
+      {
+        acc_state st;
+        e->state (r.w, i, &st);
+        if (!(st.x < 0.0))
+          {
+            if (s.bodies[i].shape == BENCH_CIRCLE)
+              circles++;
+            else
+              boxes++;
+          }
+      }
+  result_put (res, "tunnelled", circles + boxes);
+  result_put (res, "circles", circles);
+  result_put (res, "boxes", boxes);
+  run_end (&r, res);
+  bench_scene_free (&s);
+  res->ok = rc == 0;
+  return rc;
+}
+
+/* ------------------------------------------------ reference runs */
+
+static int make_reference_scene (bench_scene *s, const char *scene)
+{
+  if (strcmp (scene, "pyramid") == 0)
+    return bench_scene_make (s, "pyramid", ACC_PYRAMID_BODIES);
+  return bench_scene_make (s, "rain", ACC_RAIN_BODIES);
+}
+
+static int trajectory (const acc_engine *e, const acc_settings *set, const bench_scene *s, double *out,
+                       acc_result *res)
+{
+  acc_run r;
+  int k, i, j = 0, rc = 0, n = steps_for (ACC_REFERENCE_SECONDS, set);
+  if (run_begin (&r, e, set, s) < 0)
+    return -1;
+  for (k = 1; k <= n && rc == 0; ++k)
+    {
+      rc = run_step (&r);
+      /* sample when the step lands on k / ACC_SAMPLES of the run */
+      if (rc == 0 && (k * ACC_SAMPLES) % n == 0)
+        for (i = 0; i < s->count; ++i)
+          {
+            acc_state st;
+            if (s->bodies[i].is_static)
+              continue;
+            e->state (r.w, i, &st);
+            out[j++] = st.x, out[j++] = st.y;
+          }
+    }
+  if (j != ACC_SAMPLES * 2 * s->dynamic_count)
+    rc = -1;
+  run_end (&r, res);
+  return rc;
+}
+
+int acc_trajectory (const acc_engine *e, const acc_settings *set, const char *scene, double **out, int *count)
+{
+  bench_scene s;
+  acc_result res;
+  int rc;
+  if (make_reference_scene (&s, scene) < 0)
+    return -1;
+  *count = ACC_SAMPLES * 2 * s.dynamic_count;
+  *out = malloc ((size_t) *count * sizeof **out);
+  rc = *out ? trajectory (e, set, &s, *out, &res) : -1;
+  bench_scene_free (&s);
+  return rc;
+}
+
+int acc_reference (const acc_engine *e, const acc_settings *set, const char *scene, const double *ref,
+                   acc_result *res)
+{
+  bench_scene s;
+  double *pos, sum = 0.0;
+  int i, k, j = 0, rc;
+  result_init (res, strcmp (scene, "pyramid") == 0 ? "ref_pyramid" : "ref_rain");
+  if (make_reference_scene (&s, scene) < 0)
+    return -1;
+  pos = malloc ((size_t) ACC_SAMPLES * 2 * s.dynamic_count * sizeof *pos);
+  rc = pos ? trajectory (e, set, &s, pos, res) : -1;
+  if (rc == 0)
+    {
+      for (k = 0; k < ACC_SAMPLES; ++k)
+        for (i = 0; i < s.count; ++i)
+          {
+            double size;
+            if (s.bodies[i].is_static)
+              continue;
+            size = acc_body_size (&s.bodies[i]);
+            sum += (pow (pos[j] - ref[j], 2) + pow (pos[j + 1] - ref[j + 1], 2)) / (size * size);
+            j += 2;
+          }
+      result_put (res, "rms", sqrt (sum / (ACC_SAMPLES * s.dynamic_count)));
+    }
+  free (pos);
+  bench_scene_free (&s);
+  res->ok = rc == 0;
+  return rc;
+}
+
+int acc_run_all (const acc_engine *e, const acc_settings *set)
+{
+  int (*const measures[]) (const acc_engine *, const acc_settings *, acc_result *) = {
+    acc_collision, acc_projectile, acc_bounce, acc_gas, acc_momentum, acc_pyramid, acc_rain, acc_tunnel,
+  };
+  size_t i;
+  int rc = 0;
+  for (i = 0; i < sizeof measures / sizeof measures[0]; ++i)
+    {
+      acc_result r;
+      if (measures[i](e, set, &r) < 0)
+        {
+          r.ok = 0;
+          rc = -1;
+        }
+      acc_print (e, set, &r, NULL);
+    }
+  return rc;
+}

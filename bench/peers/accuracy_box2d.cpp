@@ -1,0 +1,115 @@
+// Box2D 2.4 through the accuracy measures (bench/accuracy.h), for comparison
+// with carom only. The scenes are built by the Box2D bench's own code:
+// bench_box2d.cpp is included here with its main renamed, so its add_fixture
+// (shapes, friction, restitution and the restitution threshold) is the one
+// used. Its settings: velocity iterations 8, position iterations 3,
+// continuous collision on, sleeping off, dt 1/60; restitution threshold 1 m/s,
+// 0 in scenes without gravity (see bench_box2d.cpp). Box2D computes in float.
+#define main bench_box2d_main
+#include "bench_box2d.cpp"
+#undef main
+
+#include <cstdlib>
+#include <cstring>
+
+#include "accuracy.h"
+
+namespace {
+
+struct b2_handle {
+  b2World *world;
+  std::vector<b2Body *> bodies;
+  float dt;
+};
+
+void *b2_create (const bench_scene *s, const acc_settings *set)
+{
+  b2_handle *h = new b2_handle;
+  float threshold = (s->gravity_x == 0.0 && s->gravity_y == 0.0) ? 0.0f : 1.0f;
+  h->dt = (float) set->dt;
+  h->world = new b2World (b2Vec2 ((float) s->gravity_x, (float) s->gravity_y));
+  h->world->SetAllowSleeping (false);
+  h->bodies.resize ((size_t) s->count);
+  for (int i = 0; i < s->count; ++i)
+    {
+      const bench_body *b = &s->bodies[i];
+      b2BodyDef bd;
+      bd.type = b->is_static ? b2_staticBody : b2_dynamicBody;
+      bd.position.Set ((float) b->x, (float) b->y);
+      bd.angle = (float) b->angle;
+      if (!b->is_static)
+        {
+          bd.linearVelocity.Set ((float) b->vx, (float) b->vy);
+          bd.angularVelocity = (float) b->spin;
+        }
+      bd.userData.pointer = (uintptr_t) i;
+      h->bodies[(size_t) i] = h->world->CreateBody (&bd);
+      add_fixture (h->bodies[(size_t) i], b, s, threshold);
+    }
+  return h;
+}
+
+int b2_step (void *p)
+{
+  b2_handle *h = static_cast<b2_handle *> (p);
+  h->world->Step (h->dt, 8, 3);
+  return 0;
+}
+
+void b2_state (void *p, int i, acc_state *o)
+{
+  b2_handle *h = static_cast<b2_handle *> (p);
+  const b2Body *b = h->bodies[(size_t) i];
+  b2Vec2 x = b->GetPosition (), v = b->GetLinearVelocity ();
+  o->x = x.x, o->y = x.y, o->vx = v.x, o->vy = v.y;
+  o->angle = b->GetAngle ();
+  o->spin = b->GetAngularVelocity ();
+  o->mass = b->GetMass ();
+  o->inertia = b->GetInertia ();
+}
+
+void b2_contacts (void *p, acc_contact_fn fn, void *user)
+{
+  b2_handle *h = static_cast<b2_handle *> (p);
+  for (b2Contact *c = h->world->GetContactList (); c; c = c->GetNext ())
+    {
+      if (!c->IsTouching ())
+        continue;
+      b2WorldManifold wm;
+      c->GetWorldManifold (&wm);
+      int a = (int) c->GetFixtureA ()->GetBody ()->GetUserData ().pointer;
+      int b = (int) c->GetFixtureB ()->GetBody ()->GetUserData ().pointer;
+      for (int k = 0; k < c->GetManifold ()->pointCount; ++k)
+        fn (user, a, b, -wm.separations[k]);
+    }
+}
+
+void b2_destroy (void *p)
+{
+  b2_handle *h = static_cast<b2_handle *> (p);
+  if (!h)
+    return;
+  delete h->world;
+  delete h;
+}
+
+} // namespace
+
+int main (int argc, char **)
+{
+  if (argc > 1)
+    {
+      std::fprintf (stderr, "usage: accuracy_box2d\n");
+      return 2;
+    }
+  static const acc_engine engine = {
+    "box2d", "velocityIterations=8,positionIterations=3,sleep=off,dt=1/60", b2_create, b2_step, b2_state,
+    b2_contacts, b2_destroy,
+  };
+  acc_settings set;
+  std::memset (&set, 0, sizeof set);
+  std::strcpy (set.knob, "peer");
+  std::strcpy (set.value, "usual");
+  set.dt = 1.0 / 60.0;
+  return acc_run_all (&engine, &set) < 0;
+}
