@@ -18,6 +18,7 @@ typedef struct contact_point {
   double tangent_mass;
   double target;        /* normal relative velocity to reach (restitution) */
   double bias;          /* pseudo-velocity that removes overlap */
+  double toi;           /* an impact this far into the sub-step, or 0 */
   double normal_impulse, tangent_impulse, pseudo_impulse;
 } contact_point;
 

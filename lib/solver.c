@@ -98,12 +98,14 @@ static void set_targets (contact *k, const double *vn, int impact, double h)
     {
       contact_point *p = &k->points[j];
       if (impact)
-        /* eq. 3.18 at every point of the manifold: each may leave at e times
-         * its own approach speed. Then the impulses change the kinetic
-         * energy by sum_i j_i (v_i,before + v_i,after) / 2, which is zero for
-         * e = 1 at the exact solution: elastic impacts conserve energy even
-         * with several points at once. */
-        p->target = -k->restitution * vn[j];
+        {
+          /* eq. 3.18 at every point of the manifold: each may leave at e
+           * times its own approach speed. Then the impulses change the
+           * kinetic energy by sum_i j_i (v_i,before + v_i,after) / 2, which
+           * is zero for e = 1 at the exact solution: elastic impacts
+           * conserve energy even with several points at once. */
+          p->target = -k->restitution * vn[j];
+        }
       else
         {
           /* a speculative point (apart by -depth) may close its gap but not
@@ -156,9 +158,37 @@ static void prepare (carom_world *world, double h)
             impact = 1;
           p->bias = p->depth > k->slop ? beta * (p->depth - k->slop) / h : 0.0;
           p->pseudo_impulse = 0.0;
+          p->toi = 0.0;
           if (k->friction == 0.0)
             p->tangent_impulse = 0.0;
         }
+      /* An impact is solved where it happens: a time t = depth / vn into
+       * the step (for points still apart), with the bodies moved by their
+       * velocities to that moment and the impact point moved with them.
+       * Both bodies' lever arms then reach the same point of space, so the
+       * impulses conserve angular momentum about any point exactly, and
+       * apply_time_of_impact puts the bodies where the event leaves them. */
+      if (impact)
+        for (j = 0; j < k->count; ++j)
+          {
+            contact_point *p = &k->points[j];
+            vec2 t = v2_perp (p->normal), meet;
+            double toi;
+            if (!(p->depth < 0.0 && vn[j] < 0.0))
+              continue;
+            toi = p->depth / vn[j] < h ? p->depth / vn[j] : h;
+            p->toi = toi;
+            meet = v2_mad (p->point, 0.5 * toi, v2_add (a->v, b->v));
+            p->ra = v2_sub (meet, v2_mad (ba->p, toi, a->v));
+            p->rb = v2_sub (meet, v2_mad (bb->p, toi, b->v));
+            p->rn_a = v2_cross (p->ra, p->normal);
+            p->rn_b = v2_cross (p->rb, p->normal);
+            p->rt_a = v2_cross (p->ra, t);
+            p->rt_b = v2_cross (p->rb, t);
+            p->normal_mass = effective_mass (a, b, p->rn_a, p->rn_b);
+            p->tangent_mass = effective_mass (a, b, p->rt_a, p->rt_b);
+            vn[j] = relative_speed (a, b, p->normal, p->rn_a, p->rn_b);
+          }
       /* two points solved together: their 2x2 matrix, if well conditioned
        * (on one face the normals agree; the vertex-edge method may give two
        * points with their own normals, coupled by n1 . n2) */
@@ -214,6 +244,45 @@ static void prepare (carom_world *world, double h)
  * by trying each set of active points in turn. Sequential impulses would
  * only approach this answer as iterations go to infinity. Returns 0 when the
  * two points are (nearly) redundant and the caller should iterate instead. */
+/* An impact solved at the start of the step really happened a time t into
+ * it, after the bodies closed their gap. Leaving at their new velocities for
+ * the whole step, they would end too far apart by the gap plus what they
+ * would have travelled towards each other, (v_before - v_after) t per body:
+ * a ball would bounce from where it was, not from the floor (+20% bounce
+ * height at e = 0.5). Each body is moved back by exactly that, through the
+ * pseudo-velocities (an impulse of -t / h times the contact's): positions
+ * then match the exact event, velocities are untouched (no energy), and the
+ * state is the true one, so angular momentum stays conserved too. */
+static void apply_time_of_impact (carom_world *world, double h)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  int32_t i, j;
+  for (i = 0; i < c->count; ++i)
+    {
+      contact *k = &c->list[i];
+      solver_body *a = &sb[k->a], *b = &sb[k->b];
+      for (j = 0; j < k->count; ++j)
+        {
+          const contact_point *p = &k->points[j];
+          double f;
+          vec2 t;
+          if (p->toi <= 0.0)
+            continue;
+          f = -p->toi / h;
+          t = v2_perp (p->normal);
+          a->pv = v2_mad (a->pv, -a->im * f * p->normal_impulse, p->normal);
+          a->pw -= a->ii * p->rn_a * f * p->normal_impulse;
+          b->pv = v2_mad (b->pv, b->im * f * p->normal_impulse, p->normal);
+          b->pw += b->ii * p->rn_b * f * p->normal_impulse;
+          a->pv = v2_mad (a->pv, -a->im * f * p->tangent_impulse, t);
+          a->pw -= a->ii * p->rt_a * f * p->tangent_impulse;
+          b->pv = v2_mad (b->pv, b->im * f * p->tangent_impulse, t);
+          b->pw += b->ii * p->rt_b * f * p->tangent_impulse;
+        }
+    }
+}
+
 static int solve_pair_block (solver_body *a, solver_body *b, contact *k)
 {
   contact_point *p1 = &k->points[0], *p2 = &k->points[1];
@@ -523,6 +592,7 @@ void solver_update (carom_world *world, double h)
   prepare (world, h);
   for (it = 0; it < world->def.iterations; ++it)
     solve_velocities (world);
+  apply_time_of_impact (world, h);
   shocked = 0;
   if ((world->gravity.x != 0.0 || world->gravity.y != 0.0) && heavy_on_light (world))
     {
