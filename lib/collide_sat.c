@@ -6,7 +6,8 @@
  * `q` (placed by xq): the candidate axes of thesis fig. 3.7. The separation
  * along an axis is the gap between p's edge and q's nearest vertex; the
  * largest over the axes is minus the length of the minimum push vector. */
-static double max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, int32_t *edge)
+static double max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double margin,
+                              int32_t *edge)
 {
   xform rel = xform_relative (xq, xp); /* p in q's frame */
   double best = -INFINITY;
@@ -15,18 +16,21 @@ static double max_separation (const convex_piece *p, xform xp, const convex_piec
   for (i = 0; i < p->count; ++i)
     {
       vec2 n = rot2_apply (rel.q, p->normals[i]);
-      vec2 v = xform_apply (rel, p->vertices[i]);
+      double offset = v2_dot (n, xform_apply (rel, p->vertices[i]));
       double s = INFINITY;
       for (j = 0; j < q->count; ++j)
         {
-          double d = v2_dot (n, v2_sub (q->vertices[j], v));
+          double d = v2_dot (n, q->vertices[j]);
           if (d < s)
             s = d;
         }
+      s -= offset;
       if (s > best)
         {
           best = s;
           *edge = i;
+          if (best > margin)
+            break; /* a separating axis: no contact, the rest cannot matter */
         }
     }
   return best;
@@ -71,10 +75,10 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
   vec2 n_ref, v1, v2_, tangent;
   clip_vertex seg[2], clip1[2], clip2[2];
   m->count = 0;
-  sep_a = max_separation (a, xa, b, xb, &edge_a);
+  sep_a = max_separation (a, xa, b, xb, margin, &edge_a);
   if (sep_a > margin)
     return 0;
-  sep_b = max_separation (b, xb, a, xa, &edge_b);
+  sep_b = max_separation (b, xb, a, xa, margin, &edge_b);
   if (sep_b > margin)
     return 0;
   /* prefer A's face unless B's is clearly better, so the choice does not
