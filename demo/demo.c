@@ -130,6 +130,14 @@ void demo_resize (demo *d, int width, int height)
   d->width = width, d->height = height;
   if (!d->entry)
     return;
+  if (!d->sized)
+    {
+      /* the window's first real size, whatever a window manager made of
+         the one asked for: the scene starts as its file has it */
+      d->sized = 1;
+      demo_base (d);
+      return;
+    }
   if (w->present && d->base_scale > 0.0)
     {
       double right = w->x1 + fmax (0.0, (width - d->base_width) / d->base_scale);
@@ -218,17 +226,16 @@ void demo_change_gravity (demo *d, double dx, double dy)
 
 void demo_change_restitution (demo *d, double delta)
 {
-  char message[512];
+  carom_status s;
   double e;
   if (!d->entry)
     return;
   e = floor (100.0 * (d->stage.restitution + delta) + 0.5) / 100.0;
   e = fmin (1.0, fmax (0.0, e));
   d->restitution_until = demo_now () + DEMO_OVERLAY_TIME;
-  if (e == d->stage.restitution)
-    return;
-  if (stage_set_restitution (&d->stage, e, &d->grab.body, message, sizeof message) != CAROM_OK)
-    fprintf (stderr, "%s\n", message);
+  s = stage_set_restitution (&d->stage, e);
+  if (s != CAROM_OK)
+    fprintf (stderr, "carom-demo: restitution %.2f: %s\n", e, carom_status_string (s));
 }
 
 void demo_destroy (demo *d)

@@ -37,6 +37,7 @@ typedef struct demo {
   double restitution_until; /* likewise the restitution bar */
   int width, height;        /* the drawing area, status line included */
   /* layout at scene start: the walls move once the window grows past it */
+  int sized;                /* demo_resize has been told the real size */
   int base_width, base_height;
   double base_view[4];      /* the scene's bodies plus margin, world units */
   double base_scale;        /* pixels per world unit at scene start */

@@ -26,9 +26,11 @@ typedef struct app {
   demo demo;
   GtkWidget *window;
   GtkWidget *canvas;
+  cairo_surface_t *frame; /* the last frame painted on the window */
   long frames;            /* --frames: ticks left; < 0 runs until quit */
   const char *screenshot; /* --screenshot: PNG written when frames run out */
-  int drawn;              /* the canvas has been drawn (it has a size) */
+  int dirty;              /* a redraw is queued and not yet done */
+  int waited;             /* ticks spent waiting for it at the end */
   int overlays;           /* demo_overlays at the last draw */
   int status;             /* exit status */
 } app;
@@ -43,34 +45,64 @@ static void app_title (app *a)
   gtk_window_set_title (GTK_WINDOW (a->window), title);
 }
 
-/* Draw the frame the window shows into a PNG of the drawing area's size. */
+static void app_redraw (app *a)
+{
+  a->dirty = 1;
+  gtk_widget_queue_draw (a->canvas);
+}
+
+/* Save the frame the window shows (the last one painted) as a PNG. */
 static int app_screenshot (app *a, const char *file)
 {
-  int w = gtk_widget_get_allocated_width (a->canvas), h = gtk_widget_get_allocated_height (a->canvas);
-  cairo_surface_t *surface = cairo_image_surface_create (CAIRO_FORMAT_RGB24, w, h);
-  cairo_t *cr = cairo_create (surface);
-  cairo_status_t s;
-  demo_draw (&a->demo, cr, w, h);
-  cairo_destroy (cr);
-  s = cairo_surface_write_to_png (surface, file);
-  cairo_surface_destroy (surface);
+  cairo_status_t s = cairo_surface_write_to_png (a->frame, file);
   if (s != CAIRO_STATUS_SUCCESS)
     {
       fprintf (stderr, "carom-demo: %s: %s\n", file, cairo_status_to_string (s));
       return 1;
     }
-  printf ("carom-demo: wrote %s (%dx%d)\n", file, w, h);
+  printf ("carom-demo: wrote %s (%dx%d)\n", file, cairo_image_surface_get_width (a->frame),
+          cairo_image_surface_get_height (a->frame));
   return 0;
 }
 
 /* ---------------------------------------------------------------- signals */
 
+/* Paint the frame into an image surface of the drawing area's size, in
+ * device pixels on a HiDPI screen. */
+static void app_paint (app *a)
+{
+  int w = gtk_widget_get_allocated_width (a->canvas), h = gtk_widget_get_allocated_height (a->canvas);
+  int scale = gtk_widget_get_scale_factor (a->canvas);
+  cairo_t *cr;
+  if (a->frame
+      && (cairo_image_surface_get_width (a->frame) != w * scale
+          || cairo_image_surface_get_height (a->frame) != h * scale))
+    {
+      cairo_surface_destroy (a->frame);
+      a->frame = NULL;
+    }
+  if (!a->frame)
+    {
+      a->frame = cairo_image_surface_create (CAIRO_FORMAT_RGB24, w * scale, h * scale);
+      cairo_surface_set_device_scale (a->frame, scale, scale);
+    }
+  cr = cairo_create (a->frame);
+  demo_draw (&a->demo, cr, w, h);
+  cairo_destroy (cr);
+  a->overlays = demo_overlays (&a->demo, demo_now ());
+  a->dirty = 0;
+}
+
+/* Paint into an image surface, then put that on the window: one image
+ * upload instead of thousands of small X requests for a busy scene, and
+ * the window shows exactly the pixels --screenshot writes. */
 static gboolean draw_event (GtkWidget *widget, cairo_t *cr, gpointer data)
 {
   app *a = data;
-  demo_draw (&a->demo, cr, gtk_widget_get_allocated_width (widget), gtk_widget_get_allocated_height (widget));
-  a->overlays = demo_overlays (&a->demo, demo_now ());
-  a->drawn = 1;
+  (void) widget;
+  app_paint (a);
+  cairo_set_source_surface (cr, a->frame, 0, 0);
+  cairo_paint (cr);
   return FALSE;
 }
 
@@ -100,7 +132,7 @@ static gboolean keyboard_input (GtkWidget *widget, GdkEventKey *event, gpointer 
     case CONTROLS_HANDLED:
       break;
     }
-  gtk_widget_queue_draw (a->canvas);
+  app_redraw (a);
   return TRUE;
 }
 
@@ -111,7 +143,7 @@ static gboolean button_press (GtkWidget *widget, GdkEventButton *event, gpointer
   if (event->type != GDK_BUTTON_PRESS || event->button != 1)
     return FALSE;
   if (controls_press (&a->demo, event->x, event->y))
-    gtk_widget_queue_draw (a->canvas);
+    app_redraw (a);
   return TRUE;
 }
 
@@ -122,7 +154,7 @@ static gboolean button_release (GtkWidget *widget, GdkEventButton *event, gpoint
   if (event->button != 1)
     return FALSE;
   if (controls_release (&a->demo, event->x, event->y))
-    gtk_widget_queue_draw (a->canvas);
+    app_redraw (a);
   return TRUE;
 }
 
@@ -131,7 +163,7 @@ static gboolean motion_notify (GtkWidget *widget, GdkEventMotion *event, gpointe
   app *a = data;
   (void) widget;
   if (controls_motion (&a->demo, event->x, event->y))
-    gtk_widget_queue_draw (a->canvas);
+    app_redraw (a);
   return TRUE;
 }
 
@@ -142,8 +174,12 @@ static gboolean timeout (gpointer data)
   app *a = data;
   if (a->frames == 0)
     {
-      if (!a->drawn)
-        return G_SOURCE_CONTINUE; /* not on screen yet */
+      /* wait for the last step to be on screen, a second at most (the
+         window may be hidden: then paint the frame ourselves) */
+      if ((!a->frame || a->dirty) && ++a->waited < 1000 / TIMER_MS)
+        return G_SOURCE_CONTINUE;
+      if (!a->frame || a->dirty)
+        app_paint (a);
       if (a->screenshot)
         a->status = app_screenshot (a, a->screenshot);
       gtk_main_quit ();
@@ -152,10 +188,10 @@ static gboolean timeout (gpointer data)
   if (!a->demo.paused)
     {
       demo_update (&a->demo);
-      gtk_widget_queue_draw (a->canvas);
+      app_redraw (a);
     }
   else if (demo_overlays (&a->demo, demo_now ()) != a->overlays)
-    gtk_widget_queue_draw (a->canvas);
+    app_redraw (a);
   if (a->frames > 0)
     --a->frames;
   return G_SOURCE_CONTINUE;
@@ -248,6 +284,13 @@ static int parse_options (int argc, char **argv, options *o)
         }
       else if (arg[0] != '-' && !o->scene)
         o->scene = arg;
+      else if (strcmp (arg, "--frames") == 0 || strcmp (arg, "--screenshot") == 0 || strcmp (arg, "--keys") == 0
+               || strcmp (arg, "--size") == 0)
+        {
+          fprintf (stderr, "%s: %s needs %s\n", argv[0], arg,
+                   arg[2] == 'f' ? "a count from 0 up" : arg[3] == 'i' ? "WxH, each 64 to 16384" : "a value");
+          return 2;
+        }
       else
         {
           fprintf (stderr, "%s: bad option or argument '%s'\n", argv[0], arg);
@@ -343,5 +386,7 @@ int main (int argc, char **argv)
   gtk_main ();
 
   demo_destroy (&a.demo);
+  if (a.frame)
+    cairo_surface_destroy (a.frame);
   return a.status;
 }

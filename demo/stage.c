@@ -1,5 +1,4 @@
-/* The stage: a world loaded from a scene file, stepped, drawn, destroyed,
- * and rebuilt when the demo changes what the API cannot change in place. */
+/* The stage: a world loaded from a scene file, stepped, drawn, destroyed. */
 #include "stage.h"
 
 #include <math.h>
@@ -86,31 +85,9 @@ static void stage_scan_text (stage_scan *scan, const char *text, size_t length)
 
 /* ------------------------------------------------------------ lifecycle */
 
-/* Load `text` into a new world and find its walls. */
-static carom_status stage_load (const char *path, const char *text, size_t length, carom_world **world,
-                                walls *w, stage_scan *scan, char *message, size_t size)
-{
-  carom_scene_error error;
-  carom_status s;
-  memset (&error, 0, sizeof error);
-  error.size = sizeof error;
-  s = carom_scene_load_text (world, text, length, NULL, &error);
-  if (s != CAROM_OK)
-    {
-      /* the library's message starts with "LINE: " when it has a line */
-      if (error.message[0])
-        snprintf (message, size, "%s:%s", path, error.message);
-      else
-        snprintf (message, size, "%s: %s", path, carom_status_string (s));
-      return s;
-    }
-  stage_scan_text (scan, text, length);
-  walls_init (w, *world, scan->has_bounds ? scan->bounds : NULL, scan->bounds_restitution, scan->bounds_friction);
-  return CAROM_OK;
-}
-
 carom_status stage_init (stage *s, const char *path, char *message, size_t size)
 {
+  carom_scene_error error;
   GError *gerror = NULL;
   stage_scan scan;
   gchar *text = NULL;
@@ -123,15 +100,24 @@ carom_status stage_init (stage *s, const char *path, char *message, size_t size)
       g_clear_error (&gerror);
       return CAROM_ERR_IO;
     }
-  st = stage_load (path, text, length, &s->world, &s->walls, &scan, message, size);
+  memset (&error, 0, sizeof error);
+  error.size = sizeof error;
+  st = carom_scene_load_text (&s->world, text, length, NULL, &error);
   if (st != CAROM_OK)
     {
+      /* the library's message starts with "LINE: " when it has a line */
+      if (error.message[0])
+        snprintf (message, size, "%s:%s", path, error.message);
+      else
+        snprintf (message, size, "%s: %s", path, carom_status_string (st));
       g_free (text);
       return st;
     }
+  stage_scan_text (&scan, text, length);
+  g_free (text);
+  walls_init (&s->walls, s->world, scan.has_bounds ? scan.bounds : NULL, scan.bounds_restitution,
+              scan.bounds_friction);
   s->path = g_strdup (path);
-  s->text = text;
-  s->length = length;
   s->restitution = scan.restitution;
   return CAROM_OK;
 }
@@ -153,104 +139,15 @@ void stage_destroy (stage *s)
 {
   carom_world_destroy (s->world);
   g_free (s->path);
-  g_free (s->text);
   memset (s, 0, sizeof *s);
 }
 
-/* ---------------------------------------------------------- restitution */
-
-/* The ids of the bodies that are not walls, in creation order: the same
- * sequence in a world rebuilt from the same text. *ids must be freed. */
-static int32_t stage_movers (const carom_world *world, const walls *w, carom_body_id **ids)
+carom_status stage_set_restitution (stage *s, double e)
 {
-  int32_t n = carom_world_get_bodies (world, NULL, 0), i, m = 0;
-  *ids = malloc (((size_t) n + 1) * sizeof **ids);
-  if (!*ids)
-    return -1;
-  n = carom_world_get_bodies (world, *ids, n);
-  for (i = 0; i < n; ++i)
-    if (!walls_contains (w, (*ids)[i]))
-      (*ids)[m++] = (*ids)[i];
-  return m;
-}
-
-/* Copy the state of each body of `from` onto its twin in `to`. */
-static carom_status stage_copy_bodies (const carom_world *from, const walls *wf, carom_world *to, const walls *wt,
-                                       carom_body_id *held)
-{
-  carom_body_id *a = NULL, *b = NULL, moved = CAROM_NULL_BODY;
-  int32_t na = stage_movers (from, wf, &a), nb = stage_movers (to, wt, &b), i;
-  carom_status s = CAROM_OK;
-  if (na < 0 || nb < 0)
-    s = CAROM_ERR_OUT_OF_MEMORY;
-  else if (na != nb)
-    s = CAROM_ERR_BAD_ARGUMENT; /* the file changed under us */
-  for (i = 0; s == CAROM_OK && i < na; ++i)
-    {
-      carom_body_type type = CAROM_STATIC;
-      double x, y, angle, vx, vy, spin;
-      if (held && *held == a[i])
-        moved = b[i];
-      carom_body_get_type (from, a[i], &type);
-      if (type != CAROM_DYNAMIC)
-        continue;
-      carom_body_get_position (from, a[i], &x, &y);
-      carom_body_get_angle (from, a[i], &angle);
-      carom_body_get_velocity (from, a[i], &vx, &vy);
-      carom_body_get_spin (from, a[i], &spin);
-      carom_body_set_position (to, b[i], x, y);
-      carom_body_set_angle (to, b[i], angle);
-      carom_body_set_velocity (to, b[i], vx, vy);
-      carom_body_set_spin (to, b[i], spin);
-    }
-  if (s == CAROM_OK && held)
-    *held = moved;
-  free (a);
-  free (b);
-  return s;
-}
-
-carom_status stage_set_restitution (stage *s, double e, carom_body_id *held, char *message, size_t size)
-{
-  char number[G_ASCII_DTOSTR_BUF_SIZE];
-  carom_world *world = NULL;
-  stage_scan scan;
-  walls w;
-  carom_status st;
-  double gx = 0.0, gy = 0.0;
-  GString *text;
-  message[0] = '\0';
-  if (!s->world)
-    return CAROM_ERR_NULL_ARGUMENT;
-  if (!(e >= 0.0 && e <= 1.0))
-    return CAROM_ERR_BAD_ARGUMENT;
-  /* a later setting overrides an earlier one: append ours (locale-free) */
-  text = g_string_new_len (s->text, (gssize) s->length);
-  g_string_append_printf (text, "\nrestitution %s\n", g_ascii_formatd (number, sizeof number, "%.6f", e));
-  st = stage_load (s->path, text->str, text->len, &world, &w, &scan, message, size);
-  g_string_free (text, TRUE);
-  if (st == CAROM_OK && s->walls.present)
-    st = walls_update (&w, world, s->walls.right, s->walls.top);
+  carom_status st = carom_world_set_restitution (s->world, e);
   if (st == CAROM_OK)
-    st = stage_copy_bodies (s->world, &s->walls, world, &w, held);
-  if (st == CAROM_OK)
-    {
-      carom_world_get_gravity (s->world, &gx, &gy);
-      carom_world_set_gravity (world, gx, gy);
-      st = carom_world_detect (world);
-    }
-  if (st != CAROM_OK)
-    {
-      carom_world_destroy (world);
-      if (!message[0])
-        snprintf (message, size, "%s: cannot rebuild the world: %s", s->path, carom_status_string (st));
-      return st;
-    }
-  carom_world_destroy (s->world);
-  s->world = world;
-  s->walls = w;
-  s->restitution = e;
-  return CAROM_OK;
+    s->restitution = e;
+  return st;
 }
 
 double stage_kinetic_energy (const stage *s)

@@ -1,6 +1,6 @@
-/* The stage: the world a scene file builds, with what the demo needs to
- * rebuild it (the file's text, its restitution, its walls). The lifecycle
- * functions are the ones the scene table (scenes.h) lists. */
+/* The stage: the world a scene file builds, with what the demo reads from
+ * the file beside it (its restitution, its walls). The lifecycle functions
+ * are the ones the scene table (scenes.h) lists. */
 #ifndef CAROM_DEMO_STAGE_H
 #define CAROM_DEMO_STAGE_H
 
@@ -14,11 +14,10 @@
 
 typedef struct stage {
   char *path;            /* the scene file */
-  char *text;            /* its contents, kept to rebuild the world */
-  size_t length;
   carom_world *world;
-  double restitution;    /* the world's default restitution (the file's,
-                            or what the demo set since) */
+  double restitution;    /* the world's default restitution: the file's
+                            last `restitution` line, or what the demo set
+                            since */
   walls walls;           /* the `bounds` walls, if the file has them */
   double step_ms;        /* wall-clock time of the last update */
 } stage;
@@ -36,12 +35,9 @@ void stage_draw (const stage *s, cairo_t *cr, const render_options *opt);
 /* Free everything; safe on a zeroed or destroyed stage. */
 void stage_destroy (stage *s);
 
-/* Change the world's default restitution to e. The API has no setter for
- * it, so the world is rebuilt from the file with `restitution e` appended
- * and every body's position, angle, velocity and spin copied over (walls
- * moved by walls_update are moved again). *held, if it names a body of the
- * old world, is changed to the same body in the new one. */
-carom_status stage_set_restitution (stage *s, double e, carom_body_id *held, char *message, size_t size);
+/* Change the world's default restitution (carom_world_set_restitution),
+ * remembering it: the API has no getter. */
+carom_status stage_set_restitution (stage *s, double e);
 
 /* Kinetic energy of the dynamic bodies: sum of m v^2 / 2 + I w^2 / 2. */
 double stage_kinetic_energy (const stage *s);

@@ -25,6 +25,7 @@ fail () { failed=$((failed + 1)); echo "FAIL $*"; }
 
 xvfb_pid=
 demo_pid=
+own_pid=
 watchdog_pid=
 keep=${DEMO_X11_OUT:+1}
 if [ -n "${DEMO_X11_OUT:-}" ]; then
@@ -37,6 +38,7 @@ fi
 cleanup () {
   trap - EXIT INT TERM HUP
   [ -n "$demo_pid" ] && kill "$demo_pid" 2>/dev/null
+  [ -n "$own_pid" ] && kill "$own_pid" 2>/dev/null
   [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null
   [ -n "$watchdog_pid" ] && kill "$watchdog_pid" 2>/dev/null
   [ -n "$demo_pid" ] && wait "$demo_pid" 2>/dev/null
@@ -46,8 +48,9 @@ cleanup () {
 finish () {
   echo "demo x11: $passed passed, $failed failed"
   cleanup
-  [ "$failed" -eq 0 ]
-  exit
+  # an explicit status: a bare exit in a trap keeps the status from before it
+  if [ "$failed" -eq 0 ]; then exit 0; fi
+  exit 1
 }
 abort () {
   fail "$*"
@@ -62,8 +65,19 @@ done
 [ -x "$DEMO" ] || abort "$DEMO is not built (make demo)"
 [ -f "$SCENE" ] || abort "$SCENE not found: run from the top of the source tree"
 
-# The whole test is bounded: a hung X server or demo cannot block CI.
-( sleep "$LIMIT"; kill -TERM $$ 2>/dev/null ) &
+# The whole test is bounded: a hung X server or demo cannot block CI. The
+# watchdog leaves our output alone (a pipe left open would hold up make)
+# and ends within a second of us.
+test_pid=$$
+(
+  i=0
+  while [ $i -lt "$LIMIT" ]; do
+    sleep 1
+    kill -0 "$test_pid" 2>/dev/null || exit 0
+    i=$((i + 1))
+  done
+  kill -TERM "$test_pid"
+) </dev/null >/dev/null 2>&1 &
 watchdog_pid=$!
 
 # ------------------------------------------------------------------ X server
@@ -81,7 +95,9 @@ while [ ! -s "$OUT/display" ] && [ $i -lt 100 ]; do
 done
 [ -s "$OUT/display" ] || abort "Xvfb did not start (see $OUT/xvfb.log)"
 DISPLAY=:$(tr -dc 0-9 <"$OUT/display")
-export DISPLAY
+# no accessibility bus on a bare server: do not let GTK look for one
+NO_AT_BRIDGE=1
+export DISPLAY NO_AT_BRIDGE
 echo "Xvfb on $DISPLAY"
 xdotool getdisplaygeometry >/dev/null 2>&1 || abort "cannot talk to Xvfb on $DISPLAY"
 
@@ -206,6 +222,18 @@ if grep -q 'in 1000x676 px' "$OUT/demo.log" && alive; then pass "resizing the wi
 else fail "no refit after resizing to 1000x700"; fi
 shot resized
 
+# Mouse play while running: throw whatever is in the middle, click on
+# empty space, drag off the window.
+key space
+eval "$(timeout 5 xdotool getwindowgeometry --shell "$wid")"
+cx=$((${X:-0} + ${WIDTH:-800} / 2)); cy=$((${Y:-0} + ${HEIGHT:-600} / 2))
+timeout 10 xdotool mousemove "$cx" "$cy" mousedown 1 mousemove "$((cx + 30))" "$((cy - 20))" \
+  mousemove "$((cx + 90))" "$((cy - 60))" mouseup 1 mousemove 5 5 click 1 \
+  mousemove "$cx" "$((cy + 100))" mousedown 1 mousemove 2000 2000 mouseup 1 >/dev/null 2>&1
+sleep 0.5
+if alive; then pass "mouse grabs, throws and stray clicks are survived"
+else fail "the demo died during the mouse test"; fi
+
 key q
 i=0
 while alive && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
@@ -232,6 +260,23 @@ if [ -s "$OUT/paused5.png" ] && cmp -s "$OUT/paused5.png" "$OUT/paused25.png"; t
   pass "--paused: the same picture after 5 and 25 frames"
 else
   fail "--paused pictures differ (or are missing)"
+fi
+
+# The window shows the very pixels --screenshot saves: dump the window of
+# a paused demo before it saves its own picture, compare the two.
+if command -v compare >/dev/null 2>&1; then
+  "$DEMO" --paused --frames 150 --screenshot "$OUT/own.png" "$SCENE" >/dev/null 2>&1 &
+  own_pid=$!
+  own_wid=$(timeout 15 xdotool search --sync --onlyvisible --pid "$own_pid" 2>/dev/null | head -n 1)
+  sleep 0.8
+  [ -n "$own_wid" ] && timeout 10 xwd -silent -id "$own_wid" -out "$OUT/own_window.xwd"
+  wait "$own_pid"
+  own_pid=
+  ae=$(compare -metric AE "xwd:$OUT/own_window.xwd" "$OUT/own.png" null: 2>&1)
+  if [ "$ae" = 0 ]; then pass "the window shows exactly what --screenshot saves"
+  else fail "window dump and --screenshot differ (AE: $ae)"; fi
+else
+  echo "skip window vs --screenshot comparison: no ImageMagick"
 fi
 
 printf 'gravity 0 -10\nbox -1 1 at 0 0\n' >"$OUT/bad.scene"
