@@ -78,6 +78,10 @@ CAROM_API const char *carom_status_string (carom_status status);
 
 /** Largest vertex count accepted for one polygon. */
 #define CAROM_MAX_POLYGON_VERTICES 1024
+/** Largest magnitude accepted for coordinates, angles, velocities, spins,
+ * accelerations and rates (BAD_ARGUMENT beyond), so that the products the
+ * solver forms stay within doubles. Time steps lie in [1e-100, 1e100]. */
+#define CAROM_MAX_MAGNITUDE 1e100
 /** Largest number of live bodies in one world (ids carry a 24-bit index). */
 #define CAROM_MAX_BODIES (1 << 24)
 
@@ -151,7 +155,7 @@ CAROM_API carom_status carom_world_init (carom_world **world,
 CAROM_API void carom_world_destroy (carom_world *world);
 
 /**
- * Advance the world by `dt` (time units, > 0 and finite): forces, collision
+ * Advance the world by `dt` (time units, 1e-100 <= dt <= 1e100): forces, collision
  * detection, collision resolution, integration, in `substeps` sub-steps.
  * Errors: NULL_ARGUMENT and BAD_TIME_STEP change nothing. OUT_OF_MEMORY
  * leaves the world valid and usable: the sub-step that failed changed no
@@ -246,7 +250,8 @@ CAROM_API carom_status carom_world_add_circle (carom_world *world,
                                                double radius,
                                                carom_body_id *id);
 
-/** Add a `width` x `height` box; inertia m (w^2 + h^2) / 12 (eq. 3.4). */
+/** Add a `width` x `height` box; inertia m (w^2 + h^2) / 12 (eq. 3.4).
+ * BAD_SIZE also for a plate thinner than 1e-10 of its length. */
 CAROM_API carom_status carom_world_add_box (carom_world *world,
                                             const carom_body_def *def,
                                             double width, double height,

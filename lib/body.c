@@ -95,6 +95,9 @@ static carom_status check_def (const carom_body_def *def)
       || !is_finite (def->vy) || !is_finite (def->spin) || !is_finite (def->density)
       || !is_finite (def->restitution) || !is_finite (def->friction))
     return CAROM_ERR_NOT_FINITE;
+  if (!is_moderate (def->x) || !is_moderate (def->y) || !is_moderate (def->angle) || !is_moderate (def->vx)
+      || !is_moderate (def->vy) || !is_moderate (def->spin))
+    return CAROM_ERR_BAD_ARGUMENT;
   if (def->type != CAROM_DYNAMIC && def->type != CAROM_STATIC)
     return CAROM_ERR_BAD_ARGUMENT;
   if (def->density <= 0.0)
@@ -270,6 +273,9 @@ carom_status carom_world_add_box (carom_world *world, const carom_body_def *def,
     return CAROM_ERR_NOT_FINITE;
   if (width <= 0.0 || height <= 0.0 || !size_in_range (width) || !size_in_range (height))
     return CAROM_ERR_BAD_SIZE;
+  /* a plate thinner than 1e-10 of its length has no interior to collide */
+  if (width < 1e-10 * height || height < 1e-10 * width)
+    return CAROM_ERR_BAD_SIZE;
   xy[0] = -0.5 * width, xy[1] = -0.5 * height;
   xy[2] = 0.5 * width, xy[3] = -0.5 * height;
   xy[4] = 0.5 * width, xy[5] = 0.5 * height;
@@ -392,6 +398,8 @@ carom_status carom_body_set_position (carom_world *world, carom_body_id id, doub
   LOOKUP (world, id, b);
   if (!is_finite (x) || !is_finite (y))
     return CAROM_ERR_NOT_FINITE;
+  if (!is_moderate (x) || !is_moderate (y))
+    return CAROM_ERR_BAD_ARGUMENT;
   b->p = v2 (x, y);
   body_wake (b);
   body_sync (b);
@@ -413,6 +421,8 @@ carom_status carom_body_set_angle (carom_world *world, carom_body_id id, double 
   LOOKUP (world, id, b);
   if (!is_finite (angle))
     return CAROM_ERR_NOT_FINITE;
+  if (!is_moderate (angle))
+    return CAROM_ERR_BAD_ARGUMENT;
   b->angle = angle;
   body_wake (b);
   body_sync (b);
@@ -436,6 +446,8 @@ carom_status carom_body_set_velocity (carom_world *world, carom_body_id id, doub
   LOOKUP (world, id, b);
   if (!is_finite (vx) || !is_finite (vy))
     return CAROM_ERR_NOT_FINITE;
+  if (!is_moderate (vx) || !is_moderate (vy))
+    return CAROM_ERR_BAD_ARGUMENT;
   if (b->type == CAROM_STATIC)
     return CAROM_ERR_STATIC_BODY;
   body_wake (b);
@@ -488,6 +500,8 @@ carom_status carom_body_set_spin (carom_world *world, carom_body_id id, double s
   LOOKUP (world, id, b);
   if (!is_finite (spin))
     return CAROM_ERR_NOT_FINITE;
+  if (!is_moderate (spin))
+    return CAROM_ERR_BAD_ARGUMENT;
   if (b->type == CAROM_STATIC)
     return CAROM_ERR_STATIC_BODY;
   if (b->fixed_rotation && spin != 0.0)

@@ -79,7 +79,8 @@ carom_status carom_world_set_central_gravity (carom_world *world, double x, doub
     return CAROM_ERR_NULL_ARGUMENT;
   if (!is_finite (x) || !is_finite (y) || !is_finite (gm) || !is_finite (softening))
     return CAROM_ERR_NOT_FINITE;
-  if (gm < 0.0 || softening < 0.0)
+  if (gm < 0.0 || softening < 0.0 || !is_moderate (x) || !is_moderate (y) || !is_moderate (gm)
+      || !is_moderate (softening))
     return CAROM_ERR_BAD_ARGUMENT;
   world->central.active = gm > 0.0;
   world->central.center = v2 (x, y);
@@ -94,7 +95,7 @@ carom_status carom_world_set_damping (carom_world *world, double linear, double 
     return CAROM_ERR_NULL_ARGUMENT;
   if (!is_finite (linear) || !is_finite (angular))
     return CAROM_ERR_NOT_FINITE;
-  if (linear < 0.0 || angular < 0.0)
+  if (linear < 0.0 || angular < 0.0 || !is_moderate (linear) || !is_moderate (angular))
     return CAROM_ERR_BAD_ARGUMENT;
   world->damping_linear = linear;
   world->damping_angular = angular;

@@ -17,9 +17,12 @@ static void central_update (carom_world *world, double h)
       if (!b->alive || b->inv_mass == 0.0)
         continue;
       d = v2_sub (c, b->p);
+      /* no closer than a millionth of the body's size: the centre itself
+       * is a singularity */
       r2 = v2_len2 (d) + s2;
-      if (r2 > 0.0)
-        b->v = v2_mad (b->v, gm_h / (r2 * sqrt (r2)), d);
+      if (r2 < 1e-12 * b->shape.size * b->shape.size)
+        r2 = 1e-12 * b->shape.size * b->shape.size;
+      b->v = v2_mad (b->v, gm_h / (r2 * sqrt (r2)), d);
     }
 }
 

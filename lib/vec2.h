@@ -70,4 +70,10 @@ static inline xform xform_relative (xform a, xform b)
 
 static inline int is_finite (double x) { return isfinite (x) != 0; }
 
+/* The largest magnitude accepted for a coordinate, velocity, spin,
+ * acceleration or time step (CAROM_MAX_MAGNITUDE): products of a few such
+ * numbers, which the solver forms, stay within doubles. */
+#define MAX_MAGNITUDE 1e100
+static inline int is_moderate (double x) { return x >= -MAX_MAGNITUDE && x <= MAX_MAGNITUDE; }
+
 #endif

@@ -17,7 +17,8 @@ static carom_status check_def (const carom_world_def *def)
   if (!is_finite (def->gravity_x) || !is_finite (def->gravity_y) || !is_finite (def->restitution)
       || !is_finite (def->friction) || !is_finite (def->position_correction) || !is_finite (def->slop))
     return CAROM_ERR_NOT_FINITE;
-  if (def->restitution < 0.0 || def->restitution > 1.0 || def->friction < 0.0 || def->substeps < 1
+  if (!is_moderate (def->gravity_x) || !is_moderate (def->gravity_y) || def->restitution < 0.0
+      || def->restitution > 1.0 || def->friction < 0.0 || def->substeps < 1
       || def->substeps > 1000 || def->iterations < 1 || def->iterations > 1000 || def->position_correction < 0.0
       || def->position_correction > 1.0 || def->slop < 0.0 || def->slop > 1.0
       || (def->narrow_phase != CAROM_NARROW_SAT && def->narrow_phase != CAROM_NARROW_VERTEX_EDGE)
@@ -122,7 +123,9 @@ carom_status carom_world_update (carom_world *world, double dt)
   double h;
   if (!world)
     return CAROM_ERR_NULL_ARGUMENT;
-  if (!is_finite (dt) || dt <= 0.0)
+  /* 1e-100 to 1e100: divided by, and multiplied into velocities, it must
+   * keep the solver's numbers within doubles */
+  if (!is_finite (dt) || !(dt >= 1e-100) || dt > MAX_MAGNITUDE)
     return CAROM_ERR_BAD_TIME_STEP;
   h = dt / world->def.substeps;
   for (k = 0; k < world->def.substeps; ++k)
@@ -140,6 +143,8 @@ carom_status carom_world_set_gravity (carom_world *world, double gx, double gy)
     return CAROM_ERR_NULL_ARGUMENT;
   if (!is_finite (gx) || !is_finite (gy))
     return CAROM_ERR_NOT_FINITE;
+  if (!is_moderate (gx) || !is_moderate (gy))
+    return CAROM_ERR_BAD_ARGUMENT;
   world->gravity = v2 (gx, gy);
   world->def.gravity_x = gx;
   world->def.gravity_y = gy;
