@@ -64,6 +64,18 @@ controls_result controls_key (demo *d, unsigned keyval)
     case GDK_KEY_c: case GDK_KEY_C:
       d->opt.show_contacts = !d->opt.show_contacts;
       break;
+    case GDK_KEY_f: case GDK_KEY_F:
+      demo_toggle_effect (d, CAROM_EFFECT_FRICTION);
+      break;
+    case GDK_KEY_d: case GDK_KEY_D:
+      demo_toggle_effect (d, CAROM_EFFECT_DAMPING);
+      break;
+    case GDK_KEY_s: case GDK_KEY_S:
+      demo_toggle_effect (d, CAROM_EFFECT_SLEEPING);
+      break;
+    case GDK_KEY_o: case GDK_KEY_O:
+      demo_toggle_effect (d, CAROM_EFFECT_CENTRAL_GRAVITY);
+      break;
     case GDK_KEY_r: case GDK_KEY_R:
       return demo_restart (d) ? CONTROLS_SCENE : CONTROLS_HANDLED;
     case GDK_KEY_h: case GDK_KEY_H: case GDK_KEY_question: case GDK_KEY_F1:

@@ -205,6 +205,7 @@ void demo_draw (demo *d, cairo_t *cr, int width, int height)
   st.restitution = d->stage.restitution;
   st.paused = d->paused;
   st.holding = d->grab.body != CAROM_NULL_BODY;
+  st.effects = carom_world_get_effects (d->stage.world);
   hud_draw_status (cr, &d->hud, &st, height - HUD_STATUS_HEIGHT, width);
 }
 
@@ -236,6 +237,38 @@ void demo_change_restitution (demo *d, double delta)
   s = stage_set_restitution (&d->stage, e);
   if (s != CAROM_OK)
     fprintf (stderr, "carom-demo: restitution %.2f: %s\n", e, carom_status_string (s));
+}
+
+void demo_toggle_effect (demo *d, carom_effect effect)
+{
+  carom_world *w = d->stage.world;
+  int on;
+  if (!d->entry || !w)
+    return;
+  on = (carom_world_get_effects (w) & (uint32_t) effect) != 0;
+  switch (effect)
+    {
+    case CAROM_EFFECT_FRICTION:
+      carom_world_set_friction (w, on ? 0.0 : 0.5);
+      break;
+    case CAROM_EFFECT_DAMPING:
+      carom_world_set_damping (w, on ? 0.0 : 0.5, on ? 0.0 : 0.5);
+      break;
+    case CAROM_EFFECT_SLEEPING:
+      carom_world_set_sleeping (w, !on);
+      break;
+    case CAROM_EFFECT_CENTRAL_GRAVITY:
+      {
+        /* a pull towards the view's centre strong enough to orbit in a few
+         * seconds: gm = (size / 2)^3 (2 pi / 4 s)^2 */
+        double cx = 0.5 * (d->opt.view_x0 + d->opt.view_x1), cy = 0.5 * (d->opt.view_y0 + d->opt.view_y1);
+        double r = 0.25 * (d->opt.view_x1 - d->opt.view_x0);
+        carom_world_set_central_gravity (w, cx, cy, on ? 0.0 : r * r * r * 2.47, on ? 0.0 : 0.1 * r);
+        break;
+      }
+    default:
+      break;
+    }
 }
 
 void demo_destroy (demo *d)

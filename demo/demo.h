@@ -70,6 +70,10 @@ void demo_draw (demo *d, cairo_t *cr, int width, int height);
 /* Change gravity by (dx, dy) and show the gravity vector for a while. */
 void demo_change_gravity (demo *d, double dx, double dy);
 
+/* Switch an effect stage on or off (friction, damping, sleeping, central
+ * gravity): the keys f, d, s and o. */
+void demo_toggle_effect (demo *d, carom_effect effect);
+
 /* Change the world's restitution by `delta` and show the bar. */
 void demo_change_restitution (demo *d, double delta);
 

@@ -1,6 +1,10 @@
 /* Status line and help overlay. */
 #include "hud.h"
 
+#include <string.h>
+
+#include "carom.h"
+
 #include <math.h>
 #include <stdio.h>
 
@@ -50,7 +54,8 @@ static void hud_energy (char *buf, size_t size, double e)
 
 void hud_draw_status (cairo_t *cr, const hud *h, const hud_status *st, double y, double width)
 {
-  char text[256], energy[32], rate[32];
+  char text[384], energy[32], rate[32], effects[128] = "";
+  uint32_t bit;
   cairo_text_extents_t ext;
   double base = y + HUD_STATUS_HEIGHT - 8.0;
   cairo_save (cr);
@@ -63,9 +68,16 @@ void hud_draw_status (cairo_t *cr, const hud *h, const hud_status *st, double y,
     snprintf (rate, sizeof rate, "PAUSED");
   else
     snprintf (rate, sizeof rate, "%3.0f fps", h->fps);
-  snprintf (text, sizeof text, "%s  %d bodies  %d contacts  %6.2f ms/step  %s  KE %s  e %.2f  g (%.3g, %.3g)%s",
+  /* the effect stages the world runs, by their short names */
+  for (bit = CAROM_EFFECT_CENTRAL_GRAVITY; bit <= CAROM_EFFECT_SLEEPING; bit <<= 1)
+    if ((st->effects & bit) && bit != CAROM_EFFECT_RESTITUTION)
+      {
+        strncat (effects, " ", sizeof effects - strlen (effects) - 1);
+        strncat (effects, carom_effect_name ((carom_effect) bit), sizeof effects - strlen (effects) - 1);
+      }
+  snprintf (text, sizeof text, "%s  %d bodies  %d contacts  %6.2f ms/step  %s  KE %s  e %.2f  g (%.3g, %.3g)%s%s",
             st->scene, st->bodies, st->contacts, h->step_ms, rate, energy, st->restitution, st->gx, st->gy,
-            st->holding ? "  holding" : "");
+            effects, st->holding ? "  holding" : "");
   hud_font (cr, 12.0, 0);
   cairo_set_source_rgb (cr, 0.90, 0.91, 0.88);
   cairo_move_to (cr, 8.0, base);
@@ -94,6 +106,10 @@ static const char *const hud_help_lines[][2] = {
   { "v", "velocity arrows" },
   { "c", "contact points and normals" },
   { "r", "restart the scene" },
+  { "f", "friction on / off (world default 0.5)" },
+  { "d", "damping on / off" },
+  { "o", "central gravity (orbit the view's centre)" },
+  { "s", "sleeping on / off" },
   { "h", "this help" },
   { "q Esc", "quit" },
   { "mouse", "drag a body, release to throw" },

@@ -5,6 +5,7 @@
 #define CAROM_DEMO_HUD_H
 
 #include <cairo.h>
+#include <stdint.h>
 
 /* Height of the status line in pixels. */
 #define HUD_STATUS_HEIGHT 24
@@ -25,6 +26,7 @@ typedef struct hud_status {
   double restitution;
   int paused;
   int holding;        /* a body is held by the mouse */
+  uint32_t effects;   /* carom_world_get_effects */
 } hud_status;
 
 void hud_init (hud *h, double now);
