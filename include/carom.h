@@ -115,7 +115,13 @@ typedef enum carom_narrow_phase {
   CAROM_NARROW_FORCE_32 = 0x7fffffff
 } carom_narrow_phase;
 
-/** World settings. Fill with carom_world_def_init, then change fields. */
+/**
+ * World settings. Fill with carom_world_def_init, then change fields.
+ * substeps, iterations, position_correction, slop and narrow_phase are the
+ * knobs that trade time for accuracy; docs/accuracy.md measures what each
+ * one costs and what error it removes (more substeps help almost every
+ * error; more iterations help stacks; the other three help overlap).
+ */
 typedef struct carom_world_def {
   uint32_t size;           /**< the caller's sizeof, set by def_init */
   double gravity_x;        /**< uniform gravity, default (0, 0) */
