@@ -69,6 +69,15 @@ static inline void push (solver_body *a, solver_body *b, vec2 d, double ra_d, do
   b->w += b->ii * rb_d * lambda;
 }
 
+/* The same on the pseudo-velocities (position correction). */
+static inline void push_pseudo (solver_body *a, solver_body *b, vec2 d, double ra_d, double rb_d, double lambda)
+{
+  a->pv = v2_mad (a->pv, -a->im * lambda, d);
+  a->pw -= a->ii * ra_d * lambda;
+  b->pv = v2_mad (b->pv, b->im * lambda, d);
+  b->pw += b->ii * rb_d * lambda;
+}
+
 /* (v_bp - v_ap) . d, eq. 3.15 and the corrected 3.17, using
  * (w x r) . d = w (r x d) */
 static inline double relative_speed (const solver_body *a, const solver_body *b, vec2 d, double ra_d, double rb_d)
@@ -276,14 +285,8 @@ static void apply_time_of_impact (carom_world *world, double h)
             continue;
           f = -p->toi / h;
           t = v2_perp (p->normal);
-          a->pv = v2_mad (a->pv, -a->im * f * p->normal_impulse, p->normal);
-          a->pw -= a->ii * p->rn_a * f * p->normal_impulse;
-          b->pv = v2_mad (b->pv, b->im * f * p->normal_impulse, p->normal);
-          b->pw += b->ii * p->rn_b * f * p->normal_impulse;
-          a->pv = v2_mad (a->pv, -a->im * f * p->tangent_impulse, t);
-          a->pw -= a->ii * p->rt_a * f * p->tangent_impulse;
-          b->pv = v2_mad (b->pv, b->im * f * p->tangent_impulse, t);
-          b->pw += b->ii * p->rt_b * f * p->tangent_impulse;
+          push_pseudo (a, b, p->normal, p->rn_a, p->rn_b, f * p->normal_impulse);
+          push_pseudo (a, b, t, p->rt_a, p->rt_b, f * p->tangent_impulse);
         }
     }
 }
@@ -375,18 +378,14 @@ static void solve_positions (carom_world *world)
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
-          double vn, acc, d;
+          double vn, acc;
           if (p->bias == 0.0 && p->pseudo_impulse == 0.0)
             continue;
           vn = v2_dot (v2_sub (b->pv, a->pv), p->normal) + b->pw * p->rn_b - a->pw * p->rn_a;
           acc = p->pseudo_impulse - p->normal_mass * (vn - p->bias);
           if (acc < 0.0)
             acc = 0.0;
-          d = acc - p->pseudo_impulse;
-          a->pv = v2_mad (a->pv, -a->im * d, p->normal);
-          a->pw -= a->ii * p->rn_a * d;
-          b->pv = v2_mad (b->pv, b->im * d, p->normal);
-          b->pw += b->ii * p->rn_b * d;
+          push_pseudo (a, b, p->normal, p->rn_a, p->rn_b, acc - p->pseudo_impulse);
           p->pseudo_impulse = acc;
         }
     }
