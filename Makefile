@@ -79,7 +79,8 @@ $(BUILD)/tests/test_%: $(BUILD)/tests/test_%.o $(BUILD)/tests/support.o $(BUILD)
 # each part's own checks (runner, demo under Xvfb, ABI, install, bindings)
 # when its fragment is present.
 CHECK_PARTS := $(if $(wildcard mk/runner.mk),check-runner) $(if $(wildcard mk/demo.mk),check-demo) \
-               $(if $(wildcard mk/bindings.mk),check-bindings) $(if $(wildcard mk/stress.mk),check-stress)
+               $(if $(wildcard mk/bindings.mk),check-bindings) $(if $(wildcard mk/stress.mk),check-stress) \
+               $(if $(wildcard mk/reliability.mk),check-reliability)
 
 check: deps-check
 	@$(MAKE) --no-print-directory tests lib

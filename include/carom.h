@@ -5,7 +5,8 @@
  * positive angles, y up. SI units are suggested, never assumed.
  *
  * Every fallible call returns a carom_status (CAROM_OK = 0) and changes
- * nothing when it fails. Bodies are named by carom_body_id values: a removed
+ * nothing when it fails (the one exception, an update that runs out of
+ * memory after some of its sub-steps, is documented at carom_world_update). Bodies are named by carom_body_id values: a removed
  * body's id is detected as stale (CAROM_ERR_STALE_BODY), never dereferenced.
  *
  * Structs that cross the ABI start with a `size` field and only ever grow by

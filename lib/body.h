@@ -41,10 +41,11 @@ void bodies_destroy (struct carom_world *world);
 body *body_lookup (const struct carom_world *world, carom_body_id id);
 carom_body_id body_id_of (const struct carom_world *world, int32_t slot);
 
-/* How far any point of the body can move in time h: |v| h + |w| R h. */
-static inline double body_reach (const body *b, double h)
+/* How far any point of the body can move in time h: (|v| + |w| R) h, plus
+ * what an acceleration of magnitude `accel` (gravity) adds within h. */
+static inline double body_reach (const body *b, double h, double accel)
 {
-  return h * (v2_len (b->v) + fabs (b->w) * b->shape.bound_radius);
+  return h * (v2_len (b->v) + fabs (b->w) * b->shape.bound_radius + (b->inv_mass > 0.0 ? accel * h : 0.0));
 }
 
 /* Sleep and wake: a sleeping body keeps its mass but acts as static (zero

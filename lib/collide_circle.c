@@ -13,13 +13,13 @@ static void set_point (manifold *m, vec2 point, vec2 normal, double depth, uint3
 int32_t collide_circles (vec2 ca, double ra, vec2 cb, double rb, double margin, manifold *m)
 {
   vec2 d = v2_sub (cb, ca), n;
-  double dist = v2_len (d), depth;
+  double dist = hypot (d.x, d.y), depth; /* the squared length may underflow */
   m->count = 0;
   if (dist > ra + rb + margin)
     return 0;
   /* coincident centres have no direction between them: pick +x, so the
    * result is still a unit normal and the same on every run */
-  n = dist > 0.0 ? v2_scale (d, 1.0 / dist) : v2 (1.0, 0.0);
+  n = dist > 0.0 ? v2 (d.x / dist, d.y / dist) : v2 (1.0, 0.0);
   depth = ra + rb - dist;
   /* the impact point halfway between the two surfaces */
   set_point (m, v2_mad (ca, ra - 0.5 * depth, n), n, depth, 0);
@@ -56,11 +56,11 @@ int32_t collide_polygon_circle (const convex_piece *a, xform xa, vec2 cb, double
       if (u1 <= 0.0 || u2 <= 0.0)
         {
           vec2 d = v2_sub (c, corner);
-          double dist = v2_len (d);
+          double dist = hypot (d.x, d.y);
           if (dist > rb + margin)
             return 0;
           if (dist > 0.0)
-            normal = v2_scale (d, 1.0 / dist);
+            normal = v2 (d.x / dist, d.y / dist);
           depth = rb - dist;
           surface = corner;
           set_point (m, xform_apply (xa, v2_mad (surface, -0.5 * depth, normal)), rot2_apply (xa.q, normal),

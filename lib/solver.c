@@ -88,7 +88,30 @@ static inline double relative_speed (const solver_body *a, const solver_body *b,
 static double effective_mass (const solver_body *a, const solver_body *b, double ra_d, double rb_d)
 {
   double k = a->im + b->im + a->ii * ra_d * ra_d + b->ii * rb_d * rb_d;
-  return k > 0.0 ? 1.0 / k : 0.0;
+  /* a non-finite k (a body far smaller than the rounding of its
+   * coordinates) leaves the point inert rather than poisoning the world */
+  return k > 0.0 && isfinite (k) ? 1.0 / k : 0.0;
+}
+
+/* Lever arms of a contact point. A lever arm cannot be longer than the body
+ * reaches (rounding of far-apart coordinates can make it so for a tiny
+ * body); a circle's normal impulse passes through its centre, so r x n is
+ * exactly 0 there whatever the rounding of the point says. */
+static void lever_arms (contact_point *p, const body *ba, const body *bb, vec2 ra, vec2 rb)
+{
+  vec2 t = v2_perp (p->normal);
+  double la = 2.0 * ba->shape.bound_radius + fabs (p->depth), lb = 2.0 * bb->shape.bound_radius + fabs (p->depth);
+  double na = v2_len (ra), nb = v2_len (rb);
+  if (na > la)
+    ra = v2_scale (ra, la / na);
+  if (nb > lb)
+    rb = v2_scale (rb, lb / nb);
+  p->ra = ra;
+  p->rb = rb;
+  p->rn_a = ba->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (ra, p->normal);
+  p->rn_b = bb->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (rb, p->normal);
+  p->rt_a = v2_cross (ra, t);
+  p->rt_b = v2_cross (rb, t);
 }
 
 /* Whether a point approaching at vn (< 0 when approaching) faster than the
@@ -152,13 +175,7 @@ static void prepare (carom_world *world, double h)
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
-          vec2 t = v2_perp (p->normal);
-          p->ra = v2_sub (p->point, ba->p);
-          p->rb = v2_sub (p->point, bb->p);
-          p->rn_a = v2_cross (p->ra, p->normal);
-          p->rn_b = v2_cross (p->rb, p->normal);
-          p->rt_a = v2_cross (p->ra, t);
-          p->rt_b = v2_cross (p->rb, t);
+          lever_arms (p, ba, bb, v2_sub (p->point, ba->p), v2_sub (p->point, bb->p));
           p->normal_mass = effective_mass (a, b, p->rn_a, p->rn_b); /* eq. 3.23's denominator */
           p->tangent_mass = effective_mass (a, b, p->rt_a, p->rt_b);
           vn[j] = relative_speed (a, b, p->normal, p->rn_a, p->rn_b);
@@ -182,19 +199,14 @@ static void prepare (carom_world *world, double h)
         for (j = 0; j < k->count; ++j)
           {
             contact_point *p = &k->points[j];
-            vec2 t = v2_perp (p->normal), meet;
+            vec2 meet;
             double toi;
             if (!(p->depth < 0.0 && vn[j] < 0.0))
               continue;
             toi = p->depth / vn[j] < h ? p->depth / vn[j] : h;
             p->toi = toi;
             meet = v2_mad (p->point, 0.5 * toi, v2_add (a->v, b->v));
-            p->ra = v2_sub (meet, v2_mad (ba->p, toi, a->v));
-            p->rb = v2_sub (meet, v2_mad (bb->p, toi, b->v));
-            p->rn_a = v2_cross (p->ra, p->normal);
-            p->rn_b = v2_cross (p->rb, p->normal);
-            p->rt_a = v2_cross (p->ra, t);
-            p->rt_b = v2_cross (p->rb, t);
+            lever_arms (p, ba, bb, v2_sub (meet, v2_mad (ba->p, toi, a->v)), v2_sub (meet, v2_mad (bb->p, toi, b->v)));
             p->normal_mass = effective_mass (a, b, p->rn_a, p->rn_b);
             p->tangent_mass = effective_mass (a, b, p->rt_a, p->rt_b);
             vn[j] = relative_speed (a, b, p->normal, p->rn_a, p->rn_b);

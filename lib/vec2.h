@@ -40,11 +40,13 @@ static inline vec2 v2_lerp (vec2 a, vec2 b, double t) { return v2 (a.x + t * (b.
 static inline vec2 v2_min (vec2 a, vec2 b) { return v2 (a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y); }
 static inline vec2 v2_max (vec2 a, vec2 b) { return v2 (a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y); }
 
-/* Unit vector along a; returns (0, 0) for a zero vector. */
+/* Unit vector along a; returns (0, 0) for a zero vector. hypot, because
+ * the squared length of a tiny vector underflows. */
 static inline vec2 v2_normalize (vec2 a)
 {
-  double l = v2_len (a);
-  return l > 0.0 ? v2_scale (a, 1.0 / l) : v2 (0.0, 0.0);
+  double l = hypot (a.x, a.y);
+  /* divide rather than multiply by 1 / l, which overflows for subnormal l */
+  return l > 0.0 ? v2 (a.x / l, a.y / l) : v2 (0.0, 0.0);
 }
 
 static inline rot2 rot2_from_angle (double angle)

@@ -1,0 +1,630 @@
+/* Fuzz target: a whole world from fuzzed settings, bodies and calls.
+ *
+ * The bytes choose, in order:
+ *   1. world settings, each field default or fuzzed (NaN, infinities, values
+ *      outside the documented ranges, a wrong struct size). The target
+ *      predicts from include/carom.h whether carom_world_init must accept
+ *      them: an invalid def must be refused with one of the statuses that
+ *      apply to it (and *world NULL), a valid one accepted. The world is then
+ *      made from the fuzzed settings brought into range (sub-steps and
+ *      iterations capped so an input stays fast).
+ *   2. up to 12 bodies: circle, box, regular polygon or polygon (a U or an
+ *      arrow, scaled), with fuzzed type, position, angle, velocity, spin,
+ *      density, restitution, friction and size. Each add is checked the same
+ *      way: refused with an applicable status and nothing created, or
+ *      accepted with finite, positive mass properties (fuzz_check_world).
+ *   3. up to 48 operations: update with a fuzzed dt (NaN, 0, negative, inf,
+ *      outside [1e-100, 1e100] must give BAD_TIME_STEP and change nothing),
+ *      remove a body (its id then stale everywhere), set position / angle /
+ *      velocity / spin / gravity (non-finite values refused with NOT_FINITE,
+ *      values beyond CAROM_MAX_MAGNITUDE with BAD_ARGUMENT, and nothing
+ *      changed; STATIC_BODY for a static body's velocity), the effects
+ *      (restitution, friction, central gravity, damping, sleeping, fixed
+ *      rotation, wake), add a body, detect, calls with stale and made-up ids.
+ * After every operation every body's state and every contact must be finite.
+ *
+ * Extreme but finite values are fed to every call. include/carom.h bounds
+ * coordinates, angles, velocities, spins, gravity and rates by
+ * CAROM_MAX_MAGNITUDE (BAD_ARGUMENT beyond), sizes by [1e-60, 1e60]
+ * (BAD_SIZE) and dt by [1e-100, 1e100] (BAD_TIME_STEP): values beyond are
+ * checked to be refused, values up to the limits to be accepted, and every
+ * body the library accepts is simulated. Only the steps themselves are kept
+ * to dt in [1e-12, 10], so 48 of them cannot carry a body from the limits
+ * past the doubles by plain free fall (dt 1e-100 and 1e100 are tried by
+ * tests/test_bad_input.c). */
+#include "fuzz_util.h"
+
+#define MAX_BODIES 12
+#define MAX_OPS 48
+#define MAG CAROM_MAX_MAGNITUDE /* coordinates, velocities, gravity, rates */
+#define SIZE_LO 1e-60             /* sizes: include/carom.h, add_circle */
+#define SIZE_HI 1e60
+#define DT_LO 1e-100              /* carom_world_update */
+#define DT_HI 1e100
+#define DT_MIN 1e-12              /* the steps this target takes */
+#define DT_MAX 10.0
+
+/* Bit sets of statuses. */
+#define BIT(s) (1u << (s))
+
+typedef struct fuzz_world {
+  fuzz_input in;
+  carom_world *w;
+  carom_body_id ids[64];
+  int fixed[64]; /* made non-rotating */
+  int count;
+  carom_body_id dead[16]; /* removed ids: stale for good */
+  int dead_count;
+} fuzz_world;
+
+static int in_range (double v, double lo, double hi)
+{
+  return v >= lo && v <= hi;
+}
+
+/* Finite but beyond CAROM_MAX_MAGNITUDE. */
+static int too_big (double v)
+{
+  return isfinite (v) && fabs (v) > MAG;
+}
+
+static double clamp_mag (double v, double max)
+{
+  if (!isfinite (v))
+    return 0.0;
+  return v > max ? max : v < -max ? -max : v;
+}
+
+static void report_status (const char *call, carom_status got, unsigned allowed)
+{
+  FUZZ_FINDING ("%s returned %d (%s); allowed set 0x%x", call, (int) got, carom_status_string (got), allowed);
+}
+
+/* ---------------------------------------------------------- world settings */
+
+/* The statuses carom_world_init may return for `d` (0: it must accept). */
+static unsigned world_def_problems (const carom_world_def *d)
+{
+  unsigned p = 0;
+  if (d->size != sizeof *d)
+    return BIT (CAROM_ERR_BAD_STRUCT_SIZE);
+  if (!isfinite (d->gravity_x) || !isfinite (d->gravity_y) || !isfinite (d->restitution) || !isfinite (d->friction)
+      || !isfinite (d->position_correction) || !isfinite (d->slop))
+    p |= BIT (CAROM_ERR_NOT_FINITE);
+  if (too_big (d->gravity_x) || too_big (d->gravity_y) || (isfinite (d->restitution) && !in_range (d->restitution, 0.0, 1.0))
+      || (isfinite (d->friction) && d->friction < 0.0)
+      || d->substeps < 1 || d->substeps > 1000 || d->iterations < 1 || d->iterations > 1000
+      || (isfinite (d->position_correction) && !in_range (d->position_correction, 0.0, 1.0))
+      || (isfinite (d->slop) && !in_range (d->slop, 0.0, 1.0))
+      || (d->narrow_phase != CAROM_NARROW_SAT && d->narrow_phase != CAROM_NARROW_VERTEX_EDGE)
+      || (!d->allocator.alloc != !d->allocator.free))
+    p |= BIT (CAROM_ERR_BAD_ARGUMENT);
+  return p;
+}
+
+static void *never_called_alloc (size_t size, void *user)
+{
+  (void) size, (void) user;
+  FUZZ_FINDING ("the allocator of a refused def was used");
+  return NULL;
+}
+
+static void make_world (fuzz_world *f)
+{
+  carom_world_def d, ok;
+  carom_world *probe = (carom_world *) f;
+  uint8_t which = fuzz_u8 (&f->in), extra = fuzz_u8 (&f->in);
+  unsigned problems;
+  carom_status s;
+
+  /* def_init itself: a wrong size is refused and writes nothing */
+  if (extra & 0x80)
+    {
+      unsigned char buf[sizeof (carom_world_def) + 16];
+      uint32_t size = fuzz_u32 (&f->in);
+      memset (buf, 0xA5, sizeof buf);
+      s = carom_world_def_init ((carom_world_def *) (void *) buf, size);
+      if (size == sizeof (carom_world_def) ? s != CAROM_OK : s != CAROM_ERR_BAD_STRUCT_SIZE)
+        FUZZ_FINDING ("world_def_init (size %lu) returned %d", (unsigned long) size, (int) s);
+      if (s != CAROM_OK)
+        {
+          size_t i;
+          for (i = 0; i < sizeof buf; ++i)
+            if (buf[i] != 0xA5)
+              FUZZ_FINDING ("world_def_init refused size %lu but wrote byte %zu", (unsigned long) size, i);
+        }
+    }
+
+  if (carom_world_def_init (&d, sizeof d) != CAROM_OK)
+    FUZZ_FINDING ("world_def_init failed");
+  if (which & 1)
+    d.gravity_x = fuzz_number (&f->in, 0), d.gravity_y = fuzz_number (&f->in, 0);
+  if (which & 2)
+    d.restitution = fuzz_number (&f->in, 0);
+  if (which & 4)
+    d.friction = fuzz_number (&f->in, 0);
+  if (which & 8)
+    d.substeps = (int32_t) fuzz_u32 (&f->in);
+  if (which & 16)
+    d.iterations = (int32_t) fuzz_u32 (&f->in);
+  if (which & 32)
+    d.position_correction = fuzz_number (&f->in, 0);
+  if (which & 64)
+    d.slop = fuzz_number (&f->in, 0);
+  if (which & 128)
+    d.narrow_phase = (carom_narrow_phase) (int32_t) fuzz_u32 (&f->in);
+  else
+    d.narrow_phase = (extra & 1) ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
+  if ((extra & 0x0e) == 0x0e)
+    d.size = fuzz_u32 (&f->in);
+  if ((extra & 0x70) == 0x70)
+    d.allocator.alloc = never_called_alloc; /* without free: refused */
+
+  problems = world_def_problems (&d);
+  s = carom_world_init (&probe, &d);
+  if (problems == 0)
+    {
+      if (s != CAROM_OK)
+        report_status ("world_init of a valid def", s, 0);
+      carom_world_destroy (probe);
+    }
+  else
+    {
+      if (s == CAROM_OK || !(problems & BIT (s)))
+        report_status ("world_init of an invalid def", s, problems);
+      if (probe != NULL)
+        FUZZ_FINDING ("world_init failed but *world is not NULL");
+    }
+
+  /* the world that runs: the same settings, in range and cheap */
+  if (carom_world_def_init (&ok, sizeof ok) != CAROM_OK)
+    FUZZ_FINDING ("world_def_init failed");
+  ok.gravity_x = clamp_mag (d.gravity_x, MAG);
+  ok.gravity_y = clamp_mag (d.gravity_y, MAG);
+  ok.restitution = in_range (d.restitution, 0.0, 1.0) ? d.restitution : 0.5;
+  ok.friction = in_range (d.friction, 0.0, 1e6) ? d.friction : 0.3;
+  ok.substeps = 1 + (int32_t) ((uint32_t) d.substeps % 4);
+  ok.iterations = 1 + (int32_t) ((uint32_t) d.iterations % 16);
+  ok.position_correction = in_range (d.position_correction, 0.0, 1.0) ? d.position_correction : 0.2;
+  ok.slop = in_range (d.slop, 0.0, 1.0) ? d.slop : 0.01;
+  ok.narrow_phase = (extra & 1) ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
+  if (carom_world_init (&f->w, &ok) != CAROM_OK)
+    FUZZ_FINDING ("world_init of a clamped def failed");
+}
+
+/* ------------------------------------------------------------------ bodies */
+
+/* A U (concave, its centroid outside it) or an arrow head, scaled. */
+static const double shape_u[] = { 0, 0, 3, 0, 3, 3, 2, 3, 2, 1, 1, 1, 1, 3, 0, 3 };
+static const double shape_arrow[] = { 0, 0, 2, -1, 1, 0, 2, 1 };
+
+static void add_fuzzed_body (fuzz_world *f)
+{
+  fuzz_input *in = &f->in;
+  carom_body_def d;
+  carom_body_id id = 99;
+  uint8_t kind = fuzz_u8 (in) % 4, flags = fuzz_u8 (in);
+  unsigned problems = 0, extreme_ok;
+  double size1 = fuzz_number (in, 0), size2 = 1.0, xy[16];
+  int32_t n = 0, before = carom_world_body_count (f->w), i;
+  int must_accept;
+  carom_status s;
+
+  if (carom_body_def_init (&d, sizeof d) != CAROM_OK)
+    FUZZ_FINDING ("body_def_init failed");
+  if (flags & 1)
+    d.type = CAROM_STATIC;
+  if (flags & 2)
+    d.x = fuzz_number (in, 0), d.y = fuzz_number (in, 0);
+  else
+    d.x = (int8_t) fuzz_u8 (in) * 0.25, d.y = (int8_t) fuzz_u8 (in) * 0.25;
+  if (flags & 4)
+    d.angle = fuzz_number (in, 0);
+  if (flags & 8)
+    d.vx = fuzz_number (in, 0), d.vy = fuzz_number (in, 0);
+  if (flags & 16)
+    d.spin = fuzz_number (in, 0);
+  if (flags & 32)
+    d.density = fuzz_number (in, 0);
+  if (flags & 64)
+    d.restitution = fuzz_number (in, 0), d.friction = fuzz_number (in, 0);
+  if ((flags & 0x81) == 0x81)
+    d.type = (carom_body_type) (int32_t) fuzz_u32 (in); /* mostly not a type */
+  if ((flags & 0x82) == 0x82 && fuzz_u8 (in) < 16)
+    d.size = fuzz_u32 (in);
+
+  /* the def's own problems, in include/carom.h's terms */
+  if (d.size != sizeof d)
+    problems |= BIT (CAROM_ERR_BAD_STRUCT_SIZE);
+  if (!fuzz_finite6 (d.x, d.y, d.angle, d.vx, d.vy, d.spin) || !isfinite (d.density) || !isfinite (d.restitution)
+      || !isfinite (d.friction))
+    problems |= BIT (CAROM_ERR_NOT_FINITE);
+  if ((d.type != CAROM_DYNAMIC && d.type != CAROM_STATIC) || too_big (d.x) || too_big (d.y) || too_big (d.angle)
+      || too_big (d.vx) || too_big (d.vy) || too_big (d.spin))
+    problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
+  if (isfinite (d.density) && d.density <= 0.0)
+    problems |= BIT (CAROM_ERR_BAD_DENSITY);
+  if (isfinite (d.restitution) && d.restitution > 1.0)
+    problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
+  if (d.size != sizeof d)
+    problems = BIT (CAROM_ERR_BAD_STRUCT_SIZE); /* nothing else is read */
+
+  /* the shape's (a polygon's size1 scales its outline, any sign; its extent
+   * is checked below) */
+  if (!isfinite (size1))
+    problems |= BIT (CAROM_ERR_NOT_FINITE);
+  else if (kind != 3 && (size1 <= 0.0 || !in_range (size1, SIZE_LO, SIZE_HI)))
+    problems |= BIT (CAROM_ERR_BAD_SIZE);
+  switch (kind)
+    {
+    case 0:
+      s = carom_world_add_circle (f->w, &d, size1, &id);
+      break;
+    case 1:
+      size2 = fuzz_number (in, 0);
+      if (!isfinite (size2))
+        problems |= BIT (CAROM_ERR_NOT_FINITE);
+      else if (size2 <= 0.0 || !in_range (size2, SIZE_LO, SIZE_HI))
+        problems |= BIT (CAROM_ERR_BAD_SIZE);
+      else if (isfinite (size1) && (size1 < 1e-10 * size2 || size2 < 1e-10 * size1))
+        problems |= BIT (CAROM_ERR_BAD_SIZE); /* a plate thinner than 1e-10 of its length */
+      s = carom_world_add_box (f->w, &d, size1, size2, &id);
+      break;
+    case 2:
+      n = (int32_t) (fuzz_u8 (in) % 40);
+      if (fuzz_u8 (in) == 0xff)
+        n = (int32_t) fuzz_u32 (in);
+      if (n < 3)
+        problems |= BIT (CAROM_ERR_TOO_FEW_VERTICES);
+      if (n > CAROM_MAX_POLYGON_VERTICES)
+        problems |= BIT (CAROM_ERR_TOO_MANY_VERTICES);
+      s = carom_world_add_regular (f->w, &d, n, size1, &id);
+      break;
+    default:
+      {
+        const double *src = (flags & 128) ? shape_arrow : shape_u;
+        n = (flags & 128) ? 4 : 8;
+        double lx = 0.0, ly = 0.0, hx = 0.0, hy = 0.0, extent;
+        for (i = 0; i < 2 * n; ++i)
+          xy[i] = src[i] * size1;
+        for (i = 0; i < n; ++i)
+          {
+            lx = fmin (lx, xy[2 * i]), hx = fmax (hx, xy[2 * i]);
+            ly = fmin (ly, xy[2 * i + 1]), hy = fmax (hy, xy[2 * i + 1]);
+          }
+        /* the extent as the library measures it: the bounding box's
+         * diagonal; within 0.1% of a limit either answer is right */
+        extent = sqrt ((hx - lx) * (hx - lx) + (hy - ly) * (hy - ly));
+        if (isfinite (size1) && size1 != 0.0 && fabs (size1) < 1e150)
+          extent = fabs (size1) * sqrt (((hx - lx) / size1) * ((hx - lx) / size1)
+                                        + ((hy - ly) / size1) * ((hy - ly) / size1));
+        if (size1 == 0.0)
+          problems |= BIT (CAROM_ERR_REPEATED_VERTEX) | BIT (CAROM_ERR_ZERO_AREA);
+        else if (isfinite (size1) && !in_range (extent, SIZE_LO * 0.999, SIZE_HI * 1.001))
+          /* its extent: BAD_SIZE says the header; a polygon that small is
+           * also truthfully (nearly) without area or vertices apart */
+          problems |= BIT (CAROM_ERR_BAD_SIZE) | BIT (CAROM_ERR_NOT_FINITE) | BIT (CAROM_ERR_ZERO_AREA)
+                      | BIT (CAROM_ERR_REPEATED_VERTEX);
+        s = carom_world_add_polygon (f->w, &d, xy, n, &id);
+      }
+      break;
+    }
+  if (!fuzz_known_status (s))
+    FUZZ_FINDING ("add (kind %d) returned unknown status %d", kind, (int) s);
+
+  /* sizes, densities and shapes whose mass properties may leave the
+   * doubles, or boxes thinner than the library's relative tolerance: the
+   * library may refuse them, with a status include/carom.h documents for
+   * that call (the polygon statuses only for add_polygon) */
+  extreme_ok = BIT (CAROM_ERR_NOT_FINITE) | BIT (CAROM_ERR_BAD_SIZE) | BIT (CAROM_ERR_BAD_DENSITY);
+  if (kind == 3)
+    extreme_ok |= BIT (CAROM_ERR_ZERO_AREA) | BIT (CAROM_ERR_REPEATED_VERTEX);
+  must_accept = in_range (fabs (size1), 1e-30, 1e30) && in_range (fabs (size2), 1e-30, 1e30)
+                && in_range (fabs (size1) / fabs (size2), 1e-6, 1e6) && in_range (d.density, 1e-30, 1e30);
+  if (problems != 0)
+    {
+      if (s == CAROM_OK || !(problems & BIT (s)))
+        FUZZ_FINDING ("add (kind %d, type %d, size %g x %g, n %d, density %g, at (%g, %g), angle %g, v (%g, %g), "
+                      "spin %g, e %g, mu %g) of an invalid body returned %d (%s); allowed set 0x%x",
+                      kind, (int) d.type, size1, size2, (int) n, d.density, d.x, d.y, d.angle, d.vx, d.vy, d.spin,
+                      d.restitution, d.friction, (int) s, carom_status_string (s), problems);
+    }
+  else if (s != CAROM_OK && (must_accept || !(extreme_ok & BIT (s))))
+    FUZZ_FINDING ("add (kind %d, size %g x %g, density %g, n %d) of a valid body returned %d (%s)", kind, size1,
+                  size2, d.density, (int) n, (int) s, carom_status_string (s));
+
+  if (s != CAROM_OK)
+    {
+      if (id != 99)
+        FUZZ_FINDING ("a refused add wrote *id");
+      if (carom_world_body_count (f->w) != before)
+        FUZZ_FINDING ("a refused add changed the body count");
+      return;
+    }
+  if (carom_world_body_count (f->w) != before + 1 || carom_body_check (f->w, id) != CAROM_OK)
+    FUZZ_FINDING ("an accepted body is not in the world");
+  fuzz_check_world (f->w, "after an add");
+
+  /* every accepted body is within the documented limits (checked above);
+   * keep at most 64 */
+  if (f->count >= 64)
+    {
+      if (carom_world_remove_body (f->w, id) != CAROM_OK)
+        FUZZ_FINDING ("removing a new body failed");
+      if (carom_body_check (f->w, id) != CAROM_ERR_STALE_BODY)
+        FUZZ_FINDING ("a removed body is still there");
+      return;
+    }
+  f->fixed[f->count] = 0;
+  f->ids[f->count++] = id;
+}
+
+/* -------------------------------------------------------------- operations */
+
+/* Every body's state, to check that a refused call changed nothing. */
+typedef struct state {
+  double v[8];
+} state;
+
+static void read_states (const fuzz_world *f, state *st)
+{
+  int i;
+  for (i = 0; i < f->count; ++i)
+    {
+      double *v = st[i].v;
+      carom_body_get_position (f->w, f->ids[i], &v[0], &v[1]);
+      carom_body_get_angle (f->w, f->ids[i], &v[2]);
+      carom_body_get_velocity (f->w, f->ids[i], &v[3], &v[4]);
+      carom_body_get_spin (f->w, f->ids[i], &v[5]);
+      carom_world_get_gravity (f->w, &v[6], &v[7]);
+    }
+}
+
+static void expect_unchanged (const fuzz_world *f, const state *before, const char *call)
+{
+  state after[64];
+  int i;
+  read_states (f, after);
+  for (i = 0; i < f->count; ++i)
+    if (memcmp (before[i].v, after[i].v, sizeof after[i].v) != 0)
+      FUZZ_FINDING ("%s was refused but body %d changed", call, i);
+}
+
+static void op_update (fuzz_world *f)
+{
+  state before[64];
+  double dt;
+  carom_status s;
+  switch (fuzz_u8 (&f->in) % 4)
+    {
+    case 0: dt = 1.0 / 60.0; break;
+    case 1: dt = 1.0 / 240.0; break;
+    default: dt = fuzz_number (&f->in, 0); break;
+    }
+  if (!isfinite (dt) || !(dt >= DT_LO) || dt > DT_HI)
+    {
+      read_states (f, before);
+      s = carom_world_update (f->w, dt);
+      if (s != CAROM_ERR_BAD_TIME_STEP)
+        FUZZ_FINDING ("update with dt %g returned %d, not BAD_TIME_STEP", dt, (int) s);
+      expect_unchanged (f, before, "update with a bad dt");
+      return;
+    }
+  dt = dt < DT_MIN ? DT_MIN : dt > DT_MAX ? DT_MAX : dt;
+  s = carom_world_update (f->w, dt);
+  if (s != CAROM_OK)
+    FUZZ_FINDING ("update with dt %g returned %d (%s)", dt, (int) s, carom_status_string (s));
+}
+
+static void op_remove (fuzz_world *f)
+{
+  int k;
+  carom_body_id id;
+  double x;
+  if (f->count == 0)
+    return;
+  k = fuzz_u8 (&f->in) % f->count;
+  id = f->ids[k];
+  if (carom_world_remove_body (f->w, id) != CAROM_OK)
+    FUZZ_FINDING ("remove of a live body failed");
+  f->ids[k] = f->ids[--f->count];
+  f->fixed[k] = f->fixed[f->count];
+  if (f->dead_count < 16)
+    f->dead[f->dead_count++] = id;
+  if (carom_world_remove_body (f->w, id) != CAROM_ERR_STALE_BODY || carom_body_check (f->w, id) != CAROM_ERR_STALE_BODY
+      || carom_body_get_position (f->w, id, &x, NULL) != CAROM_ERR_STALE_BODY
+      || carom_body_set_velocity (f->w, id, 1.0, 0.0) != CAROM_ERR_STALE_BODY)
+    FUZZ_FINDING ("a removed id is not stale");
+}
+
+static void op_set (fuzz_world *f)
+{
+  state before[64];
+  uint8_t what = fuzz_u8 (&f->in) % 5;
+  int k = f->count ? fuzz_u8 (&f->in) % f->count : 0;
+  double a = fuzz_number (&f->in, 0), b = fuzz_number (&f->in, 0);
+  carom_body_id id = f->count ? f->ids[k] : 0;
+  carom_body_type type = CAROM_DYNAMIC;
+  carom_status s;
+  int one = what == 1 || what == 3; /* angle and spin take one value */
+  int finite = isfinite (a) && (one || isfinite (b));
+  int big = too_big (a) || (!one && too_big (b));
+  if (what != 4 && f->count == 0)
+    return;
+  if (what != 4)
+    carom_body_get_type (f->w, id, &type);
+  read_states (f, before);
+  switch (what)
+    {
+    case 0: s = carom_body_set_position (f->w, id, a, b); break;
+    case 1: s = carom_body_set_angle (f->w, id, a); break;
+    case 2: s = carom_body_set_velocity (f->w, id, a, b); break;
+    case 3: s = carom_body_set_spin (f->w, id, a); break;
+    default: s = carom_world_set_gravity (f->w, a, b); break;
+    }
+  if (!finite)
+    {
+      if (s != CAROM_ERR_NOT_FINITE && !(s == CAROM_ERR_STATIC_BODY && type == CAROM_STATIC && (what == 2 || what == 3)))
+        FUZZ_FINDING ("setter %d with a non-finite value returned %d", what, (int) s);
+      expect_unchanged (f, before, "a setter with a non-finite value");
+    }
+  else if (big)
+    {
+      if (s != CAROM_ERR_BAD_ARGUMENT && !(s == CAROM_ERR_STATIC_BODY && type == CAROM_STATIC && (what == 2 || what == 3)))
+        FUZZ_FINDING ("setter %d with %g, %g beyond CAROM_MAX_MAGNITUDE returned %d", what, a, b, (int) s);
+      expect_unchanged (f, before, "a setter with a value beyond CAROM_MAX_MAGNITUDE");
+    }
+  else if ((what == 2 || what == 3) && type == CAROM_STATIC)
+    {
+      if (s != CAROM_ERR_STATIC_BODY)
+        FUZZ_FINDING ("setting a static body's velocity returned %d", (int) s);
+      expect_unchanged (f, before, "a static body's velocity");
+    }
+  else if (what == 3 && f->fixed[k] && a != 0.0)
+    {
+      if (s != CAROM_ERR_BAD_ARGUMENT)
+        FUZZ_FINDING ("spinning a non-rotating body returned %d", (int) s);
+      expect_unchanged (f, before, "spinning a non-rotating body");
+    }
+  else if (s != CAROM_OK)
+    FUZZ_FINDING ("setter %d (%g, %g) returned %d", what, a, b, (int) s);
+}
+
+/* The effect setters: non-finite values give NOT_FINITE, negative ones,
+ * ones beyond CAROM_MAX_MAGNITUDE and a restitution above 1 BAD_ARGUMENT,
+ * and nothing changes; valid values must be accepted. */
+static void op_effects (fuzz_world *f)
+{
+  state before[64];
+  uint8_t what = fuzz_u8 (&f->in) % 7;
+  double a = fuzz_number (&f->in, 0), b = fuzz_number (&f->in, 0), c = 0.0, d = 0.0;
+  int k = f->count ? fuzz_u8 (&f->in) % f->count : 0;
+  unsigned problems = 0;
+  carom_status s;
+  carom_body_type type = CAROM_DYNAMIC;
+  int32_t awake = -1;
+  if (what == 2)
+    c = fuzz_number (&f->in, 0), d = fuzz_number (&f->in, 0);
+  read_states (f, before);
+  switch (what)
+    {
+    case 0:
+      if (!isfinite (a))
+        problems = BIT (CAROM_ERR_NOT_FINITE);
+      else if (a < 0.0 || a > 1.0)
+        problems = BIT (CAROM_ERR_BAD_ARGUMENT);
+      s = carom_world_set_restitution (f->w, a);
+      break;
+    case 1:
+      if (!isfinite (a))
+        problems = BIT (CAROM_ERR_NOT_FINITE);
+      else if (a < 0.0)
+        problems = BIT (CAROM_ERR_BAD_ARGUMENT);
+      s = carom_world_set_friction (f->w, a);
+      break;
+    case 2: /* central gravity at (a, b), gm c, softening d */
+      if (!isfinite (a) || !isfinite (b) || !isfinite (c) || !isfinite (d))
+        problems |= BIT (CAROM_ERR_NOT_FINITE);
+      if ((isfinite (c) && c < 0.0) || (isfinite (d) && d < 0.0) || too_big (a) || too_big (b) || too_big (c)
+          || too_big (d))
+        problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
+      s = carom_world_set_central_gravity (f->w, a, b, c, d);
+      break;
+    case 3:
+      if (!isfinite (a) || !isfinite (b))
+        problems |= BIT (CAROM_ERR_NOT_FINITE);
+      if ((isfinite (a) && a < 0.0) || (isfinite (b) && b < 0.0) || too_big (a) || too_big (b))
+        problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
+      s = carom_world_set_damping (f->w, a, b);
+      break;
+    case 4:
+      s = carom_world_set_sleeping (f->w, a > 0.0);
+      break;
+    case 5:
+      if (f->count == 0)
+        return;
+      carom_body_get_type (f->w, f->ids[k], &type);
+      s = carom_body_set_fixed_rotation (f->w, f->ids[k], a > 0.0);
+      if (type == CAROM_STATIC)
+        problems = BIT (CAROM_ERR_STATIC_BODY);
+      else if (s == CAROM_OK)
+        f->fixed[k] = a > 0.0;
+      break;
+    default:
+      if (f->count == 0)
+        return;
+      if (carom_body_is_awake (f->w, f->ids[k], &awake) != CAROM_OK || (awake != 0 && awake != 1))
+        FUZZ_FINDING ("is_awake failed or said %d", (int) awake);
+      s = carom_body_wake (f->w, f->ids[k]);
+      break;
+    }
+  if (problems)
+    {
+      if (s == CAROM_OK || !(problems & BIT (s)))
+        report_status ("an effect setter with bad values", s, problems);
+      expect_unchanged (f, before, "an effect setter with bad values");
+    }
+  else if (s != CAROM_OK)
+    FUZZ_FINDING ("effect setter %d (%g, %g, %g, %g) returned %d (%s)", what, a, b, c, d, (int) s,
+                  carom_status_string (s));
+}
+
+/* Ids that name nothing: removed ones, 0, and made-up ones. */
+static void op_bad_ids (fuzz_world *f)
+{
+  carom_body_id id;
+  double x;
+  int i;
+  uint64_t made_up = (uint64_t) fuzz_u32 (&f->in) << 32 | fuzz_u32 (&f->in);
+  for (i = 0; i < f->dead_count; ++i)
+    if (carom_body_check (f->w, f->dead[i]) != CAROM_ERR_STALE_BODY)
+      FUZZ_FINDING ("removed id %d came back", i);
+  if (carom_body_check (f->w, CAROM_NULL_BODY) != CAROM_ERR_STALE_BODY)
+    FUZZ_FINDING ("the null id is live");
+  id = (carom_body_id) made_up;
+  if (carom_body_get_position (f->w, id, &x, NULL) == CAROM_OK)
+    {
+      for (i = 0; i < f->count; ++i)
+        if (f->ids[i] == id)
+          return;
+      FUZZ_FINDING ("made-up id %llx names a body", (unsigned long long) id);
+    }
+  else if (carom_body_check (f->w, id) != CAROM_ERR_STALE_BODY)
+    FUZZ_FINDING ("made-up id %llx: not STALE_BODY", (unsigned long long) id);
+}
+
+int LLVMFuzzerTestOneInput (const uint8_t *data, size_t size)
+{
+  fuzz_world f;
+  int i, bodies, ops;
+  memset (&f, 0, sizeof f);
+  f.in.p = data;
+  f.in.n = size;
+  make_world (&f);
+  bodies = fuzz_u8 (&f.in) % (MAX_BODIES + 1);
+  for (i = 0; i < bodies; ++i)
+    add_fuzzed_body (&f);
+  fuzz_check_world (f.w, "after the bodies");
+  ops = fuzz_u8 (&f.in) % (MAX_OPS + 1);
+  for (i = 0; i < ops && f.in.n > 0; ++i)
+    {
+      switch (fuzz_u8 (&f.in) % 9)
+        {
+        case 0:
+        case 1:
+        case 2: op_update (&f); break;
+        case 3: op_remove (&f); break;
+        case 4: op_set (&f); break;
+        case 5: add_fuzzed_body (&f); break;
+        case 6:
+          if (carom_world_detect (f.w) != CAROM_OK)
+            FUZZ_FINDING ("detect failed");
+          break;
+        case 7: op_effects (&f); break;
+        default: op_bad_ids (&f); break;
+        }
+      fuzz_check_world (f.w, "after an operation");
+    }
+  carom_world_destroy (f.w);
+  return 0;
+}

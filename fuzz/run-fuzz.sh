@@ -1,0 +1,44 @@
+#!/bin/sh
+# Run each libFuzzer target for a bounded time on its committed seed corpus
+# and report how many inputs it executed; fail on any finding.
+# Usage: fuzz/run-fuzz.sh FUZZ_DIR SECONDS "EXTRA LIBFUZZER FLAGS" TARGET...
+#
+# New inputs go to FUZZ_DIR/corpus/TARGET (the working corpus, kept between
+# runs); fuzz/corpus/TARGET, the committed seeds, is only read. A finding is
+# saved as FUZZ_DIR/artifacts/TARGET-crash-... (or leak-, timeout-, oom-):
+# replay it with FUZZ_DIR/fuzz_TARGET FILE.
+dir=$1 seconds=$2 extra=$3
+shift 3
+total=0 bad=""
+for t in "$@"; do
+  case $t in
+  scene) max_len=8192; dict="-dict=fuzz/scene.dict" ;;
+  polygon) max_len=20000; dict="" ;;
+  *) max_len=4096; dict="" ;;
+  esac
+  mkdir -p "$dir/corpus/$t" "$dir/artifacts"
+  log="$dir/fuzz_$t.log"
+  # -timeout: one input running longer is a finding (a hang);
+  # -rss_limit_mb: so is using more memory than this
+  # shellcheck disable=SC2086
+  "$dir/fuzz_$t" -max_total_time="$seconds" -max_len=$max_len -timeout=25 -rss_limit_mb=2048 \
+    -print_final_stats=1 -artifact_prefix="$dir/artifacts/$t-" $dict $extra \
+    "$dir/corpus/$t" "fuzz/corpus/$t" >"$log" 2>&1
+  rc=$?
+  runs=$(sed -n 's/^Done \([0-9]*\) runs in \([0-9]*\) second.*/\1/p' "$log" | tail -n 1)
+  secs=$(sed -n 's/^Done \([0-9]*\) runs in \([0-9]*\) second.*/\2/p' "$log" | tail -n 1)
+  cov=$(sed -n 's/^#[0-9]*.*DONE *cov: \([0-9]*\) ft: \([0-9]*\).*/cov \1, ft \2/p' "$log" | tail -n 1)
+  if [ "$rc" -ne 0 ] || [ -z "$runs" ]; then
+    echo "fuzz: $t: FINDING (exit status $rc); the end of $log:"
+    grep -E 'FINDING|ERROR|runtime error|SUMMARY|Test unit written|artifact_prefix|==[0-9]+==|#[0-9]+ in ' "$log" | head -n 40
+    bad="$bad $t"
+    continue
+  fi
+  total=$((total + runs))
+  echo "fuzz: $t: $runs runs in $secs s, no finding ($cov, corpus $(ls "$dir/corpus/$t" | wc -l) files)"
+done
+if [ -n "$bad" ]; then
+  echo "fuzz: FAILED:$bad (inputs in $dir/artifacts/)"
+  exit 1
+fi
+echo "fuzz: $# targets, $total runs, no finding"

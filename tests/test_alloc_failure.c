@@ -1,0 +1,721 @@
+/* Allocation failure, injected at every allocation a scenario makes.
+ *
+ * A checking allocator fails exactly its k-th allocation (or every one from
+ * the k-th on) and records every block with the size it was asked for. The
+ * scenario (a world with the allocator; a circle, a box, a regular polygon
+ * and a concave U; detect; 30 steps with contacts; a removal; another body;
+ * destroy) runs for k = 1, 2, ... until it completes without meeting the
+ * failure. For every k:
+ *   - the call that meets the failure returns CAROM_ERR_OUT_OF_MEMORY, and no
+ *     call returns it without having met a failure;
+ *   - it changes nothing: no body added, every body's state and the contact
+ *     list as before (the promise of include/carom.h). The one exception the
+ *     header documents: an update with several sub-steps keeps the sub-steps
+ *     completed before the one that failed. Its state must then equal, bit
+ *     for bit, that of a reference world run in lockstep with one sub-step
+ *     per update and dt / substeps, after a whole number of sub-steps;
+ *   - the world stays usable: the same call, repeated once allocations
+ *     succeed again, succeeds;
+ *   - at the end every byte is freed, and `free` got the size `alloc` got.
+ * The scene loader is run the same way through the def it takes. */
+#include "support.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ------------------------------------------------------------ allocator */
+
+enum { FAIL_ONCE, FAIL_FROM };
+
+/* Blocks carry a header with the requested size and a tag, so `free` can be
+ * checked against what `alloc` handed out. */
+typedef struct block_header {
+  size_t size;
+  unsigned long tag;
+  unsigned long pad[2]; /* keeps the user block 16-byte aligned */
+} block_header;
+
+#define BLOCK_TAG 0xC0FFEE42ul
+
+typedef struct checking_alloc {
+  long calls;          /* allocations asked for */
+  long fail_at;        /* 1-based call that fails; 0: never */
+  int mode;            /* FAIL_ONCE or FAIL_FROM */
+  long failures;       /* allocations refused so far */
+  long live_blocks;
+  size_t live_bytes;
+  long bad_frees;      /* size mismatch, unknown block, NULL */
+  long bad_users;      /* wrong `user` pointer */
+} checking_alloc;
+
+static void *checking_alloc_fn (size_t size, void *user)
+{
+  checking_alloc *c = user;
+  block_header *h;
+  c->calls++;
+  if (c->fail_at > 0 && (c->calls == c->fail_at || (c->mode == FAIL_FROM && c->calls > c->fail_at)))
+    {
+      c->failures++;
+      return NULL;
+    }
+  h = malloc (sizeof *h + size);
+  if (!h)
+    return NULL;
+  h->size = size;
+  h->tag = BLOCK_TAG;
+  c->live_blocks++;
+  c->live_bytes += size;
+  return h + 1;
+}
+
+static void checking_free_fn (void *ptr, size_t size, void *user)
+{
+  checking_alloc *c = user;
+  block_header *h;
+  if (!ptr)
+    {
+      c->bad_frees++; /* mem_free never passes NULL on */
+      return;
+    }
+  h = (block_header *) ptr - 1;
+  if (h->tag != BLOCK_TAG || h->size != size)
+    {
+      c->bad_frees++;
+      fprintf (stderr, "free: block of %zu bytes freed as %zu (tag %lx)\n", h->size, size, h->tag);
+      return; /* leaked on purpose: Valgrind reports it too */
+    }
+  h->tag = 0;
+  c->live_blocks--;
+  c->live_bytes -= size;
+  free (h);
+}
+
+static void checking_reset (checking_alloc *c, long fail_at, int mode)
+{
+  memset (c, 0, sizeof *c);
+  c->fail_at = fail_at;
+  c->mode = mode;
+}
+
+static void use_allocator (carom_world_def *def, checking_alloc *c)
+{
+  assert_status (carom_world_def_init (def, sizeof *def), CAROM_OK);
+  def->allocator.alloc = checking_alloc_fn;
+  def->allocator.free = checking_free_fn;
+  def->allocator.user = c;
+}
+
+/* ------------------------------------------------------- world snapshots */
+
+#define MAX_IDS 32
+
+typedef struct body_state {
+  carom_body_id id;
+  double x, y, angle, vx, vy, spin, mass, inertia, area;
+} body_state;
+
+typedef struct contact_state {
+  carom_body_id a, b;
+  double px, py, nx, ny, depth;
+} contact_state;
+
+typedef struct world_state {
+  int32_t body_count, contact_count;
+  body_state bodies[MAX_IDS];
+  contact_state contacts[256];
+} world_state;
+
+static void snapshot (const carom_world *w, world_state *s)
+{
+  carom_body_id ids[MAX_IDS];
+  int32_t i;
+  memset (s, 0, sizeof *s);
+  s->body_count = carom_world_get_bodies (w, ids, MAX_IDS);
+  assert_true (s->body_count <= MAX_IDS);
+  assert_int_equal (s->body_count, carom_world_body_count (w));
+  for (i = 0; i < s->body_count; ++i)
+    {
+      body_state *b = &s->bodies[i];
+      b->id = ids[i];
+      assert_status (carom_body_get_position (w, ids[i], &b->x, &b->y), CAROM_OK);
+      assert_status (carom_body_get_angle (w, ids[i], &b->angle), CAROM_OK);
+      assert_status (carom_body_get_velocity (w, ids[i], &b->vx, &b->vy), CAROM_OK);
+      assert_status (carom_body_get_spin (w, ids[i], &b->spin), CAROM_OK);
+      assert_status (carom_body_get_mass (w, ids[i], &b->mass, &b->inertia, &b->area), CAROM_OK);
+    }
+  s->contact_count = carom_world_contact_count (w);
+  for (i = 0; i < s->contact_count && i < 256; ++i)
+    {
+      contact_state *c = &s->contacts[i];
+      assert_status (carom_world_get_contact (w, i, &c->a, &c->b, &c->px, &c->py, &c->nx, &c->ny, &c->depth),
+                     CAROM_OK);
+    }
+}
+
+/* Bit-for-bit the same bodies and contacts: 1, or 0 and what differs. */
+static int same_state (const world_state *a, const world_state *b, char *why, size_t why_size)
+{
+  int32_t i;
+  if (a->body_count != b->body_count)
+    {
+      snprintf (why, why_size, "the body count went from %d to %d", (int) a->body_count, (int) b->body_count);
+      return 0;
+    }
+  for (i = 0; i < a->body_count; ++i)
+    if (memcmp (&a->bodies[i], &b->bodies[i], sizeof a->bodies[i]) != 0)
+      {
+        snprintf (why, why_size, "body %d changed: x %.17g -> %.17g, y %.17g -> %.17g, vy %.17g -> %.17g", (int) i,
+                  a->bodies[i].x, b->bodies[i].x, a->bodies[i].y, b->bodies[i].y, a->bodies[i].vy,
+                  b->bodies[i].vy);
+        return 0;
+      }
+  if (a->contact_count != b->contact_count)
+    {
+      snprintf (why, why_size, "the contact count went from %d to %d", (int) a->contact_count,
+                (int) b->contact_count);
+      return 0;
+    }
+  for (i = 0; i < a->contact_count && i < 256; ++i)
+    if (memcmp (&a->contacts[i], &b->contacts[i], sizeof a->contacts[i]) != 0)
+      {
+        snprintf (why, why_size, "contact %d changed", (int) i);
+        return 0;
+      }
+  return 1;
+}
+
+static void assert_world_finite (const carom_world *w)
+{
+  world_state *s = malloc (sizeof *s);
+  int32_t i;
+  assert_non_null (s);
+  snapshot (w, s);
+  for (i = 0; i < s->body_count; ++i)
+    {
+      const body_state *b = &s->bodies[i];
+      assert_true (isfinite (b->x) && isfinite (b->y) && isfinite (b->angle) && isfinite (b->vx)
+                   && isfinite (b->vy) && isfinite (b->spin));
+    }
+  free (s);
+}
+
+/* ------------------------------------------------------------- scenario */
+
+typedef enum step_kind {
+  ADD_GROUND,
+  ADD_CIRCLE,
+  ADD_BOX,
+  ADD_REGULAR,
+  ADD_U,
+  ADD_LATE_BOX,
+  DETECT,
+  UPDATE,
+  REMOVE
+} step_kind;
+
+#define MAX_SUBSTEPS 4
+
+typedef struct scenario {
+  checking_alloc *alloc;
+  carom_world *w;
+  long k;
+  int oom_calls;          /* calls that returned OUT_OF_MEMORY */
+  int32_t max_contacts;   /* most contact points seen after a step */
+  carom_body_id circle;
+  /* with several sub-steps: the same calls on a world with one sub-step
+   * per update, until the first failure */
+  carom_world *ref;
+  int32_t substeps;
+  world_state *ref_states[MAX_SUBSTEPS + 1]; /* after each sub-step */
+} scenario;
+
+/* The reference world: the def's settings with one sub-step per update. */
+static void start_reference (scenario *sc, const carom_world_def *def)
+{
+  carom_world_def d = *def;
+  int j;
+  assert_true (sc->substeps <= MAX_SUBSTEPS);
+  d.substeps = 1;
+  d.allocator.alloc = NULL, d.allocator.free = NULL, d.allocator.user = NULL;
+  assert_status (carom_world_init (&sc->ref, &d), CAROM_OK);
+  for (j = 0; j <= sc->substeps; ++j)
+    {
+      sc->ref_states[j] = malloc (sizeof (world_state));
+      assert_non_null (sc->ref_states[j]);
+    }
+}
+
+static void stop_reference (scenario *sc)
+{
+  int j;
+  carom_world_destroy (sc->ref);
+  sc->ref = NULL;
+  for (j = 0; j <= MAX_SUBSTEPS; ++j)
+    {
+      free (sc->ref_states[j]);
+      sc->ref_states[j] = NULL;
+    }
+}
+
+static carom_status add_body (carom_world *w, step_kind kind, carom_body_id *id)
+{
+  static const double u[] = { 0, 0, 3, 0, 3, 3, 2, 3, 2, 1, 1, 1, 1, 3, 0, 3 };
+  carom_body_def d;
+  assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+  switch (kind)
+    {
+    case ADD_GROUND:
+      d.type = CAROM_STATIC;
+      d.y = -0.5;
+      return carom_world_add_box (w, &d, 40.0, 1.0, id);
+    case ADD_CIRCLE:
+      d.x = -3.0, d.y = 0.45; /* overlaps the ground a little: contacts at once */
+      return carom_world_add_circle (w, &d, 0.5, id);
+    case ADD_BOX:
+      d.x = 0.0, d.y = 0.5, d.angle = 0.1;
+      return carom_world_add_box (w, &d, 1.0, 1.0, id);
+    case ADD_REGULAR:
+      d.x = 3.0, d.y = 0.8, d.spin = 1.0;
+      return carom_world_add_regular (w, &d, 7, 0.5, id);
+    case ADD_U:
+      d.x = 0.0, d.y = 2.2, d.vy = -1.0; /* lands on the box */
+      return carom_world_add_polygon (w, &d, u, 8, id);
+    case ADD_LATE_BOX:
+      d.x = -3.0, d.y = 2.0;
+      return carom_world_add_box (w, &d, 0.7, 0.3, id);
+    default:
+      break;
+    }
+  fail_msg ("not a body kind: %d", (int) kind);
+  return CAROM_ERR_BAD_ARGUMENT;
+}
+
+static carom_status do_step (scenario *sc, carom_world *w, step_kind kind)
+{
+  carom_body_id id = 777;
+  carom_status s;
+  switch (kind)
+    {
+    case DETECT:
+      return carom_world_detect (w);
+    case UPDATE:
+      return carom_world_update (w, 1.0 / 60.0);
+    case REMOVE:
+      return carom_world_remove_body (w, sc->circle);
+    default:
+      s = add_body (w, kind, &id);
+      if (s == CAROM_OK)
+        {
+          assert_status (carom_body_check (w, id), CAROM_OK);
+          if (kind == ADD_CIRCLE)
+            sc->circle = id;
+        }
+      else
+        assert_true (id == 777); /* *id untouched on failure */
+      return s;
+    }
+}
+
+/* The call on the reference world; an update there is `substeps` updates
+ * of dt / substeps, with the state after each kept. */
+static void reference_step (scenario *sc, step_kind kind)
+{
+  int j;
+  snapshot (sc->ref, sc->ref_states[0]);
+  if (kind != UPDATE)
+    {
+      assert_status (do_step (sc, sc->ref, kind), CAROM_OK);
+      snapshot (sc->ref, sc->ref_states[1]);
+      return;
+    }
+  for (j = 1; j <= sc->substeps; ++j)
+    {
+      assert_status (carom_world_update (sc->ref, 1.0 / 60.0 / sc->substeps), CAROM_OK);
+      snapshot (sc->ref, sc->ref_states[j]);
+    }
+}
+
+static const char *step_name (step_kind kind)
+{
+  static const char *names[] = { "add ground", "add circle", "add box", "add regular", "add U",
+                                 "add late box", "detect", "update", "remove" };
+  return names[kind];
+}
+
+/* One call of the scenario, checked as the header comment says; repeated
+ * once after an out-of-memory failure (FAIL_ONCE: allocations succeed again). */
+static int checked_call (scenario *sc, step_kind kind)
+{
+  world_state *before = malloc (sizeof *before), *after = malloc (sizeof *after);
+  long failures = sc->alloc->failures;
+  carom_status s;
+  char why[256];
+  int j, ok = 1;
+  assert_non_null (before);
+  assert_non_null (after);
+  snapshot (sc->w, before);
+  if (sc->ref)
+    reference_step (sc, kind);
+  s = do_step (sc, sc->w, kind);
+  snapshot (sc->w, after);
+  if (s == CAROM_ERR_OUT_OF_MEMORY)
+    {
+      if (sc->alloc->failures == failures)
+        fail_msg ("k=%ld: %s returned OUT_OF_MEMORY although no allocation failed", sc->k, step_name (kind));
+      sc->oom_calls++;
+      if (!same_state (before, after, why, sizeof why))
+        {
+          /* only sub-steps completed before the failing one may remain */
+          int whole = 0;
+          if (kind == UPDATE && sc->ref)
+            for (j = 1; j < sc->substeps && !whole; ++j)
+              whole = same_state (sc->ref_states[j], after, why + 128, sizeof why - 128);
+          if (!whole)
+            fail_msg ("k=%ld: %s failed but %s%s", sc->k, step_name (kind), why,
+                      kind == UPDATE && sc->substeps > 1 ? ", and it matches no whole number of completed sub-steps"
+                                                          : "");
+        }
+      if (sc->ref)
+        stop_reference (sc); /* the two worlds part here */
+      if (sc->alloc->mode == FAIL_FROM)
+        ok = 0;
+      else
+        {
+          s = do_step (sc, sc->w, kind);
+          if (s != CAROM_OK)
+            fail_msg ("k=%ld: %s repeated after an out-of-memory failure returned %d (%s)", sc->k,
+                      step_name (kind), (int) s, carom_status_string (s));
+        }
+    }
+  else if (s != CAROM_OK)
+    fail_msg ("k=%ld: %s returned %d (%s), wanted OK or OUT_OF_MEMORY", sc->k, step_name (kind), (int) s,
+              carom_status_string (s));
+  else if (sc->ref && !same_state (sc->ref_states[kind == UPDATE ? sc->substeps : 1], after, why, sizeof why))
+    /* the lockstep the sub-step check relies on: one update of K sub-steps
+     * is K updates of dt / K */
+    fail_msg ("k=%ld: %s: the reference world with one sub-step per update differs: %s", sc->k, step_name (kind),
+              why);
+  free (before);
+  free (after);
+  return ok;
+}
+
+/* Returns the number of calls that returned OUT_OF_MEMORY. */
+static int run_scenario (checking_alloc *c, long k, int mode, carom_narrow_phase narrow, int32_t substeps,
+                         int32_t *max_contacts)
+{
+  static const step_kind adds[] = { ADD_GROUND, ADD_CIRCLE, ADD_BOX, ADD_REGULAR, ADD_U };
+  scenario sc;
+  carom_world_def def;
+  carom_status s;
+  size_t i;
+  int step;
+  int32_t bodies = 0;
+
+  memset (&sc, 0, sizeof sc);
+  sc.alloc = c;
+  sc.k = k;
+  use_allocator (&def, c);
+  def.gravity_y = -10.0;
+  def.narrow_phase = narrow;
+  def.substeps = substeps;
+  checking_reset (c, k, mode);
+
+  sc.w = (carom_world *) &sc; /* must come back NULL on failure */
+  s = carom_world_init (&sc.w, &def);
+  if (s == CAROM_ERR_OUT_OF_MEMORY)
+    {
+      assert_true (c->failures > 0);
+      assert_null (sc.w);
+      assert_int_equal (c->live_blocks, 0);
+      if (mode == FAIL_FROM)
+        return 1;
+      sc.oom_calls++;
+      s = carom_world_init (&sc.w, &def);
+    }
+  assert_status (s, CAROM_OK);
+  assert_non_null (sc.w);
+  sc.substeps = substeps;
+  if (substeps > 1 && mode == FAIL_ONCE && sc.oom_calls == 0)
+    start_reference (&sc, &def);
+
+  for (i = 0; i < sizeof adds / sizeof adds[0]; ++i)
+    {
+      if (!checked_call (&sc, adds[i]))
+        goto out;
+      assert_int_equal (carom_world_body_count (sc.w), ++bodies);
+    }
+  if (!checked_call (&sc, DETECT))
+    goto out;
+  assert_true (carom_world_contact_count (sc.w) > 0);
+  for (step = 0; step < 30; ++step)
+    {
+      if (!checked_call (&sc, UPDATE))
+        goto out;
+      if (carom_world_contact_count (sc.w) > sc.max_contacts)
+        sc.max_contacts = carom_world_contact_count (sc.w);
+      assert_world_finite (sc.w);
+      if (step == 15)
+        {
+          if (!checked_call (&sc, REMOVE))
+            goto out;
+          assert_int_equal (carom_world_body_count (sc.w), --bodies);
+          assert_status (carom_body_check (sc.w, sc.circle), CAROM_ERR_STALE_BODY);
+          if (!checked_call (&sc, ADD_LATE_BOX))
+            goto out;
+          assert_int_equal (carom_world_body_count (sc.w), ++bodies);
+        }
+    }
+  assert_int_equal (carom_world_body_count (sc.w), bodies);
+out:
+  if (max_contacts)
+    *max_contacts = sc.max_contacts;
+  if (sc.ref)
+    stop_reference (&sc);
+  carom_world_destroy (sc.w);
+  if (c->live_blocks != 0 || c->live_bytes != 0)
+    fail_msg ("k=%ld: %ld blocks (%zu bytes) still allocated after destroy", k, c->live_blocks, c->live_bytes);
+  if (c->bad_frees != 0)
+    fail_msg ("k=%ld: %ld frees with a size other than the allocated one", k, c->bad_frees);
+  return sc.oom_calls;
+}
+
+/* For k = 1, 2, ...: until the k-th allocation is never reached. */
+static void sweep (int mode, carom_narrow_phase narrow, int32_t substeps)
+{
+  checking_alloc c;
+  long k, total;
+  int32_t max_contacts = 0;
+  int ooms = 0;
+  /* without failures: how many allocations the scenario makes */
+  run_scenario (&c, 0, FAIL_ONCE, narrow, substeps, &max_contacts);
+  total = c.calls;
+  assert_true (total > 10);
+  assert_true (max_contacts > 0); /* the scenario does collide */
+  for (k = 1;; ++k)
+    {
+      int n = run_scenario (&c, k, mode, narrow, substeps, NULL);
+      if (c.failures == 0)
+        break;
+      if (n == 0 && mode == FAIL_FROM)
+        fail_msg ("k=%ld: an allocation failed but no call returned OUT_OF_MEMORY", k);
+      ooms += n;
+      assert_true (k <= total + 1);
+    }
+  assert_int_equal (k, total + 1); /* every allocation was made to fail once */
+  assert_true (ooms > 0);
+  print_message ("%ld allocations, each failed once; %d calls returned OUT_OF_MEMORY\n", total, ooms);
+}
+
+static void test_fail_each_allocation_once_sat (void **state)
+{
+  (void) state;
+  sweep (FAIL_ONCE, CAROM_NARROW_SAT, 1);
+}
+
+static void test_fail_each_allocation_once_vertex_edge (void **state)
+{
+  (void) state;
+  sweep (FAIL_ONCE, CAROM_NARROW_VERTEX_EDGE, 1);
+}
+
+/* A failed update must change nothing even when some sub-steps had already
+ * run (include/carom.h: "the world is unchanged on error"). */
+static void test_fail_each_allocation_once_substeps (void **state)
+{
+  (void) state;
+  sweep (FAIL_ONCE, CAROM_NARROW_SAT, 3);
+}
+
+/* Rain: 24 circles at different heights land on the ground one after the
+ * other, so the contact list keeps growing during updates of 4 sub-steps and
+ * its buffers are reallocated in later sub-steps too. Each allocation made
+ * by the updates fails once; the failed update must leave the world as it
+ * was or as a whole number of its sub-steps left it (checked against the
+ * reference world), then succeed. */
+static void test_rain_update_out_of_memory_with_substeps (void **state)
+{
+  checking_alloc c;
+  carom_world_def def;
+  scenario sc;
+  carom_body_def d;
+  long k, setup_calls, total = -1;
+  int i, step, ooms = 0;
+  (void) state;
+  use_allocator (&def, &c);
+  def.gravity_y = -10.0;
+  def.substeps = 4;
+  for (k = 0;; ++k)
+    {
+      carom_world *worlds[2];
+      int n;
+      memset (&sc, 0, sizeof sc);
+      sc.alloc = &c;
+      sc.substeps = def.substeps;
+      checking_reset (&c, 0, FAIL_ONCE);
+      assert_status (carom_world_init (&sc.w, &def), CAROM_OK);
+      start_reference (&sc, &def);
+      worlds[0] = sc.w, worlds[1] = sc.ref;
+      for (n = 0; n < 2; ++n)
+        {
+          assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+          d.type = CAROM_STATIC;
+          assert_status (carom_world_add_box (worlds[n], &d, 40.0, 1.0, NULL), CAROM_OK);
+          assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+          for (i = 0; i < 24; ++i)
+            {
+              d.x = -12.0 + i, d.y = 1.0 + 0.35 * i;
+              assert_status (carom_world_add_circle (worlds[n], &d, 0.45, NULL), CAROM_OK);
+            }
+        }
+      setup_calls = c.calls;
+      c.fail_at = k > 0 ? setup_calls + k : 0;
+      sc.k = k;
+      for (step = 0; step < 90; ++step)
+        checked_call (&sc, UPDATE);
+      if (k == 0)
+        {
+          total = c.calls - setup_calls;
+          assert_true (total > 2);
+          assert_int_equal (carom_world_contact_count (sc.w), 24 * 1); /* all landed */
+        }
+      ooms += sc.oom_calls;
+      if (sc.ref)
+        stop_reference (&sc);
+      carom_world_destroy (sc.w);
+      assert_int_equal (c.live_blocks, 0);
+      assert_int_equal (c.bad_frees, 0);
+      if (k > 0 && c.failures == 0)
+        break;
+    }
+  assert_int_equal (k, total + 1);
+  assert_true (ooms > 0);
+}
+
+/* Out of memory for good from the k-th allocation: the failing call reports
+ * it and destroy still frees everything. */
+static void test_fail_every_allocation_from_k (void **state)
+{
+  (void) state;
+  sweep (FAIL_FROM, CAROM_NARROW_SAT, 1);
+}
+
+/* -------------------------------------------------------------- scenes */
+
+static const char scene_text[] = "gravity 0 -9.81\n"
+                                 "restitution 0.3\n"
+                                 "substeps 2\n"
+                                 "bounds 0 0 10 8\n"
+                                 "circle 0.5 at 2 1 velocity 1 0\n"
+                                 "box 1 0.5 at 5 0.3 angle 0.2\n"
+                                 "regular 6 0.4 at 7 1 spin 1\n"
+                                 "polygon 0 0 3 0 3 3 2 3 2 1 1 1 1 3 0 3 at 5 3 velocity 0 -1\n"
+                                 "polygon 0 0 1.2 0 0.3 0.9 at 8.5 3 static\n";
+
+/* Each allocation of the loader fails once: OUT_OF_MEMORY, no world, every
+ * byte back, the error struct naming the cause. */
+static void scene_sweep (const char *path)
+{
+  checking_alloc c;
+  carom_world_def def;
+  carom_world *w = NULL;
+  long k, total;
+  carom_status s;
+  use_allocator (&def, &c);
+  checking_reset (&c, 0, FAIL_ONCE);
+  s = path ? carom_scene_load_file (&w, path, &def, NULL)
+           : carom_scene_load_text (&w, scene_text, sizeof scene_text - 1, &def, NULL);
+  assert_status (s, CAROM_OK);
+  total = c.calls; /* the loader's allocations */
+  assert_true (carom_world_body_count (w) >= 9);
+  assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
+  carom_world_destroy (w);
+  assert_int_equal (c.live_blocks, 0);
+  assert_true (total > 10);
+  for (k = 1; k <= total; ++k)
+    {
+      carom_scene_error err;
+      int step;
+      memset (&err, 0x55, sizeof err);
+      err.size = sizeof err;
+      checking_reset (&c, k, FAIL_ONCE);
+      w = (carom_world *) &c; /* must come back NULL on failure */
+      s = path ? carom_scene_load_file (&w, path, &def, &err)
+               : carom_scene_load_text (&w, scene_text, sizeof scene_text - 1, &def, &err);
+      if (s == CAROM_OK)
+        {
+          /* the loader may have recovered (the failed block was scratch);
+           * the world must then be complete and work */
+          assert_non_null (w);
+          assert_true (carom_world_body_count (w) >= 9);
+          for (step = 0; step < 5; ++step)
+            assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
+          assert_world_finite (w);
+          carom_world_destroy (w);
+        }
+      else
+        {
+          if (s != CAROM_ERR_OUT_OF_MEMORY)
+            fail_msg ("%s, allocation %ld of %ld failed: status %d (%s) '%s'", path ? path : "text", k, total,
+                      (int) s, carom_status_string (s), err.message);
+          assert_null (w);
+          assert_int_equal (err.cause, CAROM_ERR_OUT_OF_MEMORY);
+          assert_non_null (memchr (err.message, '\0', sizeof err.message));
+        }
+      assert_true (c.failures == 1);
+      if (c.live_blocks != 0 || c.bad_frees != 0)
+        fail_msg ("%s, allocation %ld failed: %ld blocks (%zu bytes) left, %ld bad frees", path ? path : "text", k,
+                  c.live_blocks, c.live_bytes, c.bad_frees);
+    }
+}
+
+static void test_scene_text_out_of_memory (void **state)
+{
+  (void) state;
+  scene_sweep (NULL);
+}
+
+static void test_scene_file_out_of_memory (void **state)
+{
+  (void) state;
+  scene_sweep ("scenes/thesis.scene");
+}
+
+/* A def whose allocator has alloc but no free is refused before any
+ * allocation (BAD_ARGUMENT), by the world and by the loader. */
+static void test_half_allocator_rejected (void **state)
+{
+  checking_alloc c;
+  carom_world_def def;
+  carom_world *w = (carom_world *) &c;
+  (void) state;
+  use_allocator (&def, &c);
+  checking_reset (&c, 0, FAIL_ONCE);
+  def.allocator.free = NULL;
+  assert_status (carom_world_init (&w, &def), CAROM_ERR_BAD_ARGUMENT);
+  assert_null (w);
+  w = (carom_world *) &c;
+  assert_status (carom_scene_load_text (&w, "circle 1\n", 9, &def, NULL), CAROM_ERR_BAD_ARGUMENT);
+  assert_null (w);
+  def.allocator.free = checking_free_fn;
+  def.allocator.alloc = NULL;
+  assert_status (carom_world_init (&w, &def), CAROM_ERR_BAD_ARGUMENT);
+  assert_int_equal (c.calls, 0);
+}
+
+int main (void)
+{
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test (test_fail_each_allocation_once_sat),
+    cmocka_unit_test (test_fail_each_allocation_once_vertex_edge),
+    cmocka_unit_test (test_fail_each_allocation_once_substeps),
+    cmocka_unit_test (test_rain_update_out_of_memory_with_substeps),
+    cmocka_unit_test (test_fail_every_allocation_from_k),
+    cmocka_unit_test (test_scene_text_out_of_memory),
+    cmocka_unit_test (test_scene_file_out_of_memory),
+    cmocka_unit_test (test_half_allocator_rejected),
+  };
+  return cmocka_run_group_tests_name ("alloc_failure", tests, NULL, NULL);
+}
