@@ -23,6 +23,7 @@ SO_REAL := $(BUILD)/libcarom.so.$(VERSION)
 LIB_SRC := $(sort $(wildcard lib/*.c))
 LIB_OBJ := $(LIB_SRC:lib/%.c=$(BUILD)/lib/%.o)
 LIB_PIC := $(LIB_SRC:lib/%.c=$(BUILD)/pic/%.o)
+LIB_DBG := $(LIB_SRC:lib/%.c=$(BUILD)/debug/%.o)
 
 TEST_SRC := $(sort $(wildcard tests/test_*.c))
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
@@ -51,7 +52,13 @@ $(BUILD)/libcarom.a: $(LIB_OBJ)
 	objcopy --localize-hidden $(BUILD)/carom-all.o
 	ar rcs $@ $(BUILD)/carom-all.o
 
-$(BUILD)/libcarom-internal.a: $(LIB_OBJ)
+# The tests link a build with CAROM_DEBUG_CHECKS: after every sub-step it
+# aborts, naming the body, if any state is not finite.
+$(BUILD)/debug/%.o: lib/%.c
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) -Ilib $(WARN) $(OPT) $(CFLAGS) -DCAROM_DEBUG_CHECKS -fvisibility=hidden -c $< -o $@
+
+$(BUILD)/libcarom-internal.a: $(LIB_DBG)
 	@rm -f $@
 	ar rcs $@ $^
 

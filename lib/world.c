@@ -95,6 +95,30 @@ static void drift (carom_world *world, double h)
     }
 }
 
+#ifdef CAROM_DEBUG_CHECKS
+#include <stdio.h>
+#include <stdlib.h>
+/* The test builds' "no NaN ever" check: every state finite after every
+ * sub-step, or stop at once, naming the body. */
+static void check_finite (const carom_world *world)
+{
+  int32_t i;
+  for (i = 0; i < world->slot_count; ++i)
+    {
+      const body *b = &world->bodies[i];
+      if (b->alive
+          && !(is_finite (b->p.x) && is_finite (b->p.y) && is_finite (b->angle) && is_finite (b->v.x)
+               && is_finite (b->v.y) && is_finite (b->w)))
+        {
+          fprintf (stderr, "carom: CAROM_DEBUG_CHECKS: body in slot %ld is not finite after a sub-step\n", (long) i);
+          abort ();
+        }
+    }
+}
+#else
+#define check_finite(world) ((void) 0)
+#endif
+
 static carom_status substep (carom_world *world, double h)
 {
   carom_status st;
@@ -114,6 +138,7 @@ static carom_status substep (carom_world *world, double h)
   solver_update (world, h);
   drift (world, h);
   sleep_update (world, h);
+  check_finite (world);
   return CAROM_OK;
 }
 
