@@ -1,6 +1,7 @@
 /* carom's accuracy against its knobs: every measure of accuracy_measures.c
  * for each setting of each knob of carom_world_def (substeps, iterations,
- * position_correction, slop, narrow_phase) and of dt, one knob at a time
+ * position_correction, slop, narrow_phase), of continuous collision and of dt,
+ * one knob at a time
  * from the defaults, plus the presets fast and precise; and the reference
  * runs (pyramid and rain against a run at dt 1/120, 32 substeps,
  * 50 iterations). Prints "acc ..." lines (accuracy.h) for
@@ -75,7 +76,8 @@ static void *carom_create (const bench_scene *s, const acc_settings *set)
   def.position_correction = set->position_correction;
   def.slop = set->slop;
   def.narrow_phase = set->narrow_phase ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
-  if (!h->ids || !h->map || carom_world_init (&h->world, &def) != CAROM_OK)
+  if (!h->ids || !h->map || carom_world_init (&h->world, &def) != CAROM_OK
+      || carom_world_set_continuous (h->world, set->continuous) != CAROM_OK)
     {
       carom_destroy (h);
       return NULL;
@@ -168,6 +170,7 @@ static int settings_default (acc_settings *set)
   set->position_correction = def.position_correction;
   set->slop = def.slop;
   set->narrow_phase = def.narrow_phase == CAROM_NARROW_VERTEX_EDGE;
+  set->continuous = 1;
   set->dt = 1.0 / 60.0;
   return 0;
 }
@@ -236,7 +239,7 @@ static int wanted (const char *list, const char *knob)
   return 0;
 }
 
-typedef enum knob_id { K_SUBSTEPS, K_ITERATIONS, K_CORRECTION, K_SLOP, K_NARROW, K_DT } knob_id;
+typedef enum knob_id { K_SUBSTEPS, K_ITERATIONS, K_CORRECTION, K_SLOP, K_NARROW, K_CONTINUOUS, K_DT } knob_id;
 
 static void knob (sweep *w, const char *only, knob_id k, const char *name, const double *values, int n)
 {
@@ -270,6 +273,10 @@ static void knob (sweep *w, const char *only, knob_id k, const char *name, const
           set.narrow_phase = (int) values[i];
           strcpy (set.value, set.narrow_phase ? "vertex-edge" : "SAT");
           break;
+        case K_CONTINUOUS:
+          set.continuous = (int) values[i];
+          strcpy (set.value, set.continuous ? "on" : "off");
+          break;
         case K_DT:
           set.dt = 1.0 / values[i];
           snprintf (set.value, sizeof set.value, "1/%g", values[i]);
@@ -277,7 +284,8 @@ static void knob (sweep *w, const char *only, knob_id k, const char *name, const
         }
       same = set.substeps == w->def.substeps && set.iterations == w->def.iterations
              && set.position_correction == w->def.position_correction && set.slop == w->def.slop
-             && set.narrow_phase == w->def.narrow_phase && set.dt == w->def.dt;
+             && set.narrow_phase == w->def.narrow_phase && set.continuous == w->def.continuous
+             && set.dt == w->def.dt;
       fprintf (stderr, "accuracy: %s=%s\n", set.knob, set.value);
       if (same)
         repeat_default (w, &set);
@@ -302,7 +310,7 @@ int main (int argc, char **argv)
 {
   static const double substeps[] = { 1, 2, 4, 8 }, iterations[] = { 2, 4, 8, 16, 32 },
                       correction[] = { 0.05, 0.1, 0.2, 0.4, 0.8 }, slop[] = { 0.001, 0.005, 0.01, 0.02 },
-                      narrow[] = { 0, 1 }, rate[] = { 30, 60, 120, 240 };
+                      narrow[] = { 0, 1 }, continuous[] = { 1, 0 }, rate[] = { 30, 60, 120, 240 };
   const char *only = NULL;
   sweep w;
   int i;
@@ -315,7 +323,7 @@ int main (int argc, char **argv)
       w.with_reference = atoi (argv[i] + 10);
     else
       {
-        fprintf (stderr, "usage: %s [knobs=substeps,iterations,position_correction,slop,narrow_phase,dt,preset] "
+        fprintf (stderr, "usage: %s [knobs=substeps,iterations,position_correction,slop,narrow_phase,continuous,dt,preset] "
                          "[reference=0|1]\n", argv[0]);
         return 2;
       }
@@ -361,6 +369,7 @@ int main (int argc, char **argv)
   knob (&w, only, K_CORRECTION, "position_correction", correction, 5);
   knob (&w, only, K_SLOP, "slop", slop, 4);
   knob (&w, only, K_NARROW, "narrow_phase", narrow, 2);
+  knob (&w, only, K_CONTINUOUS, "continuous", continuous, 2);
   knob (&w, only, K_DT, "dt", rate, 4);
   preset (&w, only, "fast", 1, 4);
   preset (&w, only, "precise", 4, 8);

@@ -74,6 +74,7 @@ with its debug assertions on).
 * **carom settings**: one knob at a time from the defaults ($DEFAULTS):
   substeps 1, 2, 4, 8; iterations 2, 4, 8, 16, 32; position_correction 0.05, 0.1,
   0.2, 0.4, 0.8; slop 0.001, 0.005, 0.01, 0.02; narrow phase SAT or vertex-edge;
+  continuous collision on (the default) or off;
   dt 1/30, 1/60, 1/120, 1/240 s. Presets: **fast** (substeps 1, iterations 4),
   **balanced** (the defaults), **precise** (substeps 4, iterations 8): they are
   points of this map, not separate modes.
@@ -205,7 +206,7 @@ END {
   NNAME[4] = "Stacks that stand still"
   NNAME[5] = "Piles without visible overlap"
   NNAME[6] = "Trajectories close to the converged answer (stacks)"
-  nknob = split ("substeps iterations position_correction slop narrow_phase dt", KN, " ")
+  nknob = split ("substeps iterations position_correction slop narrow_phase continuous dt", KN, " ")
   for (n = 1; n <= NN; ++n) {
     split (NEED[n], f, ":"); m = f[1]; k = f[2]; title = f[3]
     for (ki = 1; ki <= nknob; ++ki) {
@@ -282,7 +283,7 @@ if command -v gnuplot >/dev/null 2>&1; then
       echo "set title '$(cat "$PLOT/need$n.title")'"
       plot="plot"
       sep=""
-      for k in substeps iterations position_correction slop narrow_phase dt; do
+      for k in substeps iterations position_correction slop narrow_phase continuous dt; do
         f=$PLOT/need${n}_$k.dat
         [ -s "$f" ] || continue
         plot="$plot$sep '$f' using 1:2 with linespoints title '$(echo $k | tr _ ' ')'"

@@ -481,6 +481,14 @@ carom_status carom_body_wake (carom_world *world, carom_body_id id)
   return CAROM_OK;
 }
 
+carom_status carom_body_set_bullet (carom_world *world, carom_body_id id, int32_t bullet)
+{
+  body *b;
+  LOOKUP (world, id, b);
+  b->bullet = bullet != 0;
+  return CAROM_OK;
+}
+
 carom_status carom_body_set_fixed_rotation (carom_world *world, carom_body_id id, int32_t fixed)
 {
   body *b;

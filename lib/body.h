@@ -28,6 +28,7 @@ typedef struct body {
   double pw;
   int32_t touching; /* had a contact this sub-step (set by the solver) */
   int32_t fixed_rotation; /* non-rotating: inv_inertia stays 0 */
+  int32_t bullet;         /* continuous collision even when the world's is off */
   int32_t asleep;         /* sleeping: zero inverse mass, not moved */
   double sleep_time;      /* how long it has been slow enough to sleep */
 } body;
@@ -42,10 +43,14 @@ body *body_lookup (const struct carom_world *world, carom_body_id id);
 carom_body_id body_id_of (const struct carom_world *world, int32_t slot);
 
 /* How far any point of the body can move in time h: (|v| + |w| R) h, plus
- * what an acceleration of magnitude `accel` (gravity) adds within h. */
-static inline double body_reach (const body *b, double h, double accel)
+ * what an acceleration of magnitude `accel` (gravity) adds within h. Without
+ * continuous collision (world off and not a bullet) contacts are looked for
+ * no further ahead than 2% of the body's size. */
+static inline double body_reach (const body *b, double h, double accel, int continuous)
 {
-  return h * (v2_len (b->v) + fabs (b->w) * b->shape.bound_radius + (b->inv_mass > 0.0 ? accel * h : 0.0));
+  double r = h * (v2_len (b->v) + fabs (b->w) * b->shape.bound_radius + (b->inv_mass > 0.0 ? accel * h : 0.0));
+  double cap = 0.02 * b->shape.size;
+  return continuous || b->bullet || r < cap ? r : cap;
 }
 
 /* Sleep and wake: a sleeping body keeps its mass but acts as static (zero

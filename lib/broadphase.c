@@ -21,9 +21,9 @@ void broadphase_destroy (carom_world *world)
 /* Boxes grow by the body's contact margin and by how far it can move in
  * this sub-step, so pairs that are apart but within the margin, or that will
  * meet before the next detection, are still reported. */
-static void fill_entry (sweep_entry *e, const body *b, int axis, double slop, double h, double accel)
+static void fill_entry (sweep_entry *e, const body *b, int axis, double slop, double h, double accel, int continuous)
 {
-  double m = slop * b->shape.size + body_reach (b, h, accel);
+  double m = slop * b->shape.size + body_reach (b, h, accel, continuous);
   if (axis == 0)
     {
       e->lo = b->box_lo.x - m, e->hi = b->box_hi.x + m;
@@ -124,7 +124,8 @@ int broadphase_update (carom_world *world, pair_callback fn, void *user)
         if (world->bodies[i].alive)
           {
             bp->entries[n].slot = i;
-            fill_entry (&bp->entries[n], &world->bodies[i], bp->axis, world->def.slop, world->step_h, v2_len (world->gravity));
+            fill_entry (&bp->entries[n], &world->bodies[i], bp->axis, world->def.slop, world->step_h, v2_len (world->gravity),
+                        world->continuous);
             n++;
           }
       bp->count = n;
@@ -135,7 +136,8 @@ int broadphase_update (carom_world *world, pair_callback fn, void *user)
     {
       n = bp->count;
       for (i = 0; i < n; ++i)
-        fill_entry (&bp->entries[i], &world->bodies[bp->entries[i].slot], bp->axis, world->def.slop, world->step_h, v2_len (world->gravity));
+        fill_entry (&bp->entries[i], &world->bodies[bp->entries[i].slot], bp->axis, world->def.slop, world->step_h, v2_len (world->gravity),
+                        world->continuous);
       if (!insertion_sort (bp->entries, n))
         merge_sort (bp->entries, bp->scratch, n);
     }

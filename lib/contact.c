@@ -165,8 +165,8 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
   pc.slop = world->def.slop * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   /* speculative margin: pairs that can close their gap within this sub-step
    * are contacts now, so impacts are met before the bodies overlap */
-  pc.margin = pc.slop + body_reach (A, world->step_h, v2_len (world->gravity))
-              + body_reach (B, world->step_h, v2_len (world->gravity));
+  pc.margin = pc.slop + body_reach (A, world->step_h, v2_len (world->gravity), world->continuous || B->bullet)
+              + body_reach (B, world->step_h, v2_len (world->gravity), world->continuous || A->bullet);
   xa.p = A->p, xa.q = A->q;
   xb.p = B->p, xb.q = B->q;
 

@@ -4,7 +4,7 @@
 #include "world.h"
 
 static const char *const effect_names[] = {
-  "gravity", "central-gravity", "restitution", "friction", "fixed-rotation", "damping", "sleeping",
+  "gravity", "central-gravity", "restitution", "friction", "fixed-rotation", "damping", "sleeping", "continuous",
 };
 
 const char *carom_effect_name (carom_effect effect)
@@ -34,6 +34,8 @@ uint32_t carom_world_get_effects (const carom_world *world)
     e |= CAROM_EFFECT_DAMPING;
   if (world->sleeping)
     e |= CAROM_EFFECT_SLEEPING;
+  if (world->continuous)
+    e |= CAROM_EFFECT_CONTINUOUS;
   for (i = 0; i < world->slot_count; ++i)
     {
       const body *b = &world->bodies[i];
@@ -45,6 +47,8 @@ uint32_t carom_world_get_effects (const carom_world *world)
         e |= CAROM_EFFECT_FRICTION;
       if (b->fixed_rotation)
         e |= CAROM_EFFECT_FIXED_ROTATION;
+      if (b->bullet)
+        e |= CAROM_EFFECT_CONTINUOUS;
     }
   return e;
 }
@@ -112,5 +116,13 @@ carom_status carom_world_set_sleeping (carom_world *world, int32_t enabled)
     for (i = 0; i < world->slot_count; ++i)
       if (world->bodies[i].alive && world->bodies[i].type == CAROM_DYNAMIC)
         body_wake (&world->bodies[i]);
+  return CAROM_OK;
+}
+
+carom_status carom_world_set_continuous (carom_world *world, int32_t enabled)
+{
+  if (!world)
+    return CAROM_ERR_NULL_ARGUMENT;
+  world->continuous = enabled != 0;
   return CAROM_OK;
 }

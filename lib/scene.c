@@ -29,10 +29,12 @@ enum {
   OPT_RESTITUTION = 1u << 5,
   OPT_FRICTION = 1u << 6,
   OPT_STATIC = 1u << 7,
-  OPT_FIXED = 1u << 8
+  OPT_FIXED = 1u << 8,
+  OPT_BULLET = 1u << 9
 };
 #define OPT_MATERIAL (OPT_RESTITUTION | OPT_FRICTION)
-#define OPT_BODY (OPT_AT | OPT_ANGLE | OPT_VELOCITY | OPT_SPIN | OPT_DENSITY | OPT_MATERIAL | OPT_STATIC | OPT_FIXED)
+#define OPT_BODY                                                                                                       \
+  (OPT_AT | OPT_ANGLE | OPT_VELOCITY | OPT_SPIN | OPT_DENSITY | OPT_MATERIAL | OPT_STATIC | OPT_FIXED | OPT_BULLET)
 
 typedef struct scene_option {
   const char *word;
@@ -50,6 +52,7 @@ static const scene_option scene_options[] = {
   { "friction", 1, OPT_FRICTION },
   { "static", 0, OPT_STATIC },
   { "fixed", 0, OPT_FIXED },
+  { "bullet", 0, OPT_BULLET },
 };
 
 typedef struct scene_parser {
@@ -77,6 +80,7 @@ typedef struct scene_parser {
   double central[4];         /* x, y, gm, softening */
   double damping[2];
   int sleeping;
+  int continuous;            /* 1 (the default) or 0: `continuous 0` */
   uint32_t named_effects;    /* named by `effects`: must end up active */
   int32_t effects_line;
 } scene_parser;
@@ -312,6 +316,8 @@ static carom_status scene_added (scene_parser *p, carom_status s)
 {
   if (s == CAROM_OK && (p->opts & OPT_FIXED))
     s = carom_body_set_fixed_rotation (p->world, p->last, 1);
+  if (s == CAROM_OK && (p->opts & OPT_BULLET))
+    s = carom_body_set_bullet (p->world, p->last, 1);
   if (s == CAROM_OK)
     return s;
   return scene_fail (p, s, "%s: %s", p->tok[0], carom_status_string (s));
@@ -416,6 +422,14 @@ static carom_status scene_do_central (scene_parser *p)
   return CAROM_OK;
 }
 
+static carom_status scene_do_continuous (scene_parser *p)
+{
+  if (p->num[0] != 0.0 && p->num[0] != 1.0)
+    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "continuous: 1 (on, the default) or 0 (off), got %g", p->num[0]);
+  p->continuous = p->num[0] != 0.0;
+  return CAROM_OK;
+}
+
 static carom_status scene_do_damping (scene_parser *p)
 {
   p->damping[0] = p->num[0];
@@ -460,6 +474,8 @@ static carom_status scene_apply_effects (scene_parser *p)
     s = carom_world_set_damping (p->world, p->damping[0], p->damping[1]);
   if (s == CAROM_OK && p->sleeping)
     s = carom_world_set_sleeping (p->world, 1);
+  if (s == CAROM_OK && !p->continuous)
+    s = carom_world_set_continuous (p->world, 0);
   if (s != CAROM_OK)
     return scene_fail (p, s, "an effect was rejected: %s", carom_status_string (s));
   return CAROM_OK;
@@ -487,6 +503,7 @@ static const scene_statement scene_statements[] = {
   { "iterations", SCENE_SETTING, 1, 1, 0, 0, "iterations N", scene_do_iterations },
   { "central", SCENE_SETTING, 3, 4, 0, 0, "central X Y GM [SOFTENING]", scene_do_central },
   { "damping", SCENE_SETTING, 1, 2, 0, 0, "damping LINEAR [ANGULAR]", scene_do_damping },
+  { "continuous", SCENE_SETTING, 1, 1, 0, 0, "continuous 1|0", scene_do_continuous },
   { "effects", SCENE_SETTING, 0, 0, 0, 1, "effects NAME...", scene_do_effects },
   { "bounds", SCENE_BODY, 4, 4, OPT_MATERIAL, 0, "bounds X0 Y0 X1 Y1 [restitution E] [friction MU]", scene_do_bounds },
   { "circle", SCENE_BODY, 1, 1, OPT_BODY, 0, "circle R [options]", scene_do_circle },
@@ -539,6 +556,7 @@ static carom_status scene_apply_option (scene_parser *p, const scene_option *opt
       break;
     case OPT_STATIC: b->type = CAROM_STATIC; break;
     case OPT_FIXED: break; /* applied once the body exists */
+    case OPT_BULLET: break;
     }
   return s;
 }
@@ -732,6 +750,7 @@ static carom_status scene_parser_init (scene_parser *p, const carom_world_def *d
 {
   carom_status s;
   memset (p, 0, sizeof *p);
+  p->continuous = 1;
   s = world_def_import (def, &p->def);
   if (s != CAROM_OK)
     return scene_fail (p, s, "the world def's size field is %lu, this library knows %lu to %lu",

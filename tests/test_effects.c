@@ -91,6 +91,8 @@ static carom_world *busy_scene (int toggle)
       carom_world_set_restitution (w, 0.5);
       carom_world_set_friction (w, 0.4);
       carom_body_set_fixed_rotation (w, first, 1);
+      carom_body_set_bullet (w, first, 1);
+      carom_world_set_continuous (w, 0);
       assert_int_not_equal (carom_world_get_effects (w), 0);
       carom_world_set_gravity (w, 0, 0);
       carom_world_set_central_gravity (w, 0, 0, 0, 0);
@@ -99,6 +101,8 @@ static carom_world *busy_scene (int toggle)
       carom_world_set_restitution (w, 0);
       carom_world_set_friction (w, 0);
       carom_body_set_fixed_rotation (w, first, 0);
+      carom_body_set_bullet (w, first, 0);
+      carom_world_set_continuous (w, 1);
     }
   return w;
 }
@@ -113,8 +117,8 @@ static void test_stages_switched_off_change_nothing (void **state)
   carom_world *plain = busy_scene (0), *toggled = busy_scene (1);
   int i;
   (void) state;
-  assert_int_equal (carom_world_get_effects (plain), 0);
-  assert_int_equal (carom_world_get_effects (toggled), 0);
+  assert_int_equal (carom_world_get_effects (plain), CAROM_EFFECT_CONTINUOUS);
+  assert_int_equal (carom_world_get_effects (toggled), CAROM_EFFECT_CONTINUOUS);
   for (i = 0; i < 300; ++i)
     {
       carom_world_update (plain, 1.0 / 60);
@@ -130,9 +134,13 @@ static void test_effects_are_reported_when_used (void **state)
   carom_world *w = new_world (0, 0);
   carom_body_id b = add_box (w, CAROM_DYNAMIC, 0, 0, 0, 1, 1);
   uint32_t all = CAROM_EFFECT_GRAVITY | CAROM_EFFECT_CENTRAL_GRAVITY | CAROM_EFFECT_RESTITUTION
-                 | CAROM_EFFECT_FRICTION | CAROM_EFFECT_FIXED_ROTATION | CAROM_EFFECT_DAMPING | CAROM_EFFECT_SLEEPING;
+                 | CAROM_EFFECT_FRICTION | CAROM_EFFECT_FIXED_ROTATION | CAROM_EFFECT_DAMPING | CAROM_EFFECT_SLEEPING
+                 | CAROM_EFFECT_CONTINUOUS;
   (void) state;
+  assert_int_equal (carom_world_get_effects (w), CAROM_EFFECT_CONTINUOUS); /* on by default */
+  carom_world_set_continuous (w, 0);
   assert_int_equal (carom_world_get_effects (w), 0);
+  carom_world_set_continuous (w, 1);
   carom_world_set_gravity (w, 0, -1);
   carom_world_set_central_gravity (w, 0, 0, 1, 0);
   carom_world_set_restitution (w, 0.5);
@@ -148,6 +156,7 @@ static void test_effects_are_reported_when_used (void **state)
   carom_body_set_fixed_rotation (w, b, 0);
   carom_world_set_damping (w, 0, 0);
   carom_world_set_sleeping (w, 0);
+  carom_world_set_continuous (w, 0);
   assert_int_equal (carom_world_get_effects (w), 0);
   assert_string_equal (carom_effect_name (CAROM_EFFECT_SLEEPING), "sleeping");
   assert_null (carom_effect_name ((carom_effect) 3));
@@ -310,6 +319,37 @@ static void test_sleeping_stack_wakes_when_hit (void **state)
   carom_world_destroy (w);
 }
 
+/* Continuous collision: with it (the default) a bullet at 300 m/s never
+ * passes a wall thinner than its travel per step; with it off the same
+ * bullet tunnels; a body marked as a bullet keeps it in a world without. */
+static double bullet_x_after (int world_continuous, int bullet)
+{
+  carom_world *w = new_world (0, 0);
+  carom_body_def d;
+  carom_body_id b;
+  double x;
+  int step;
+  assert_status (carom_world_set_continuous (w, world_continuous), CAROM_OK);
+  add_box (w, CAROM_STATIC, 10.0, 0.0, 0.0, 0.1, 4.0);
+  carom_body_def_init (&d, sizeof d);
+  d.x = -3.3, d.vx = 300.0;
+  assert_status (carom_world_add_circle (w, &d, 0.05, &b), CAROM_OK);
+  assert_status (carom_body_set_bullet (w, b, bullet), CAROM_OK);
+  for (step = 0; step < 60; ++step)
+    carom_world_update (w, 1.0 / 60);
+  carom_body_get_position (w, b, &x, NULL);
+  carom_world_destroy (w);
+  return x;
+}
+
+static void test_continuous_collision_switch (void **state)
+{
+  (void) state;
+  assert_true (bullet_x_after (1, 0) < 10.0);  /* on: stopped by the wall */
+  assert_true (bullet_x_after (0, 0) > 10.0);  /* off: tunnels through */
+  assert_true (bullet_x_after (0, 1) < 10.0);  /* off, but a bullet */
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
@@ -321,6 +361,7 @@ int main (void)
     cmocka_unit_test (test_damping_decay_is_exponential),
     cmocka_unit_test (test_fixed_rotation_never_rotates),
     cmocka_unit_test (test_sleeping_stack_wakes_when_hit),
+    cmocka_unit_test (test_continuous_collision_switch),
   };
   return cmocka_run_group_tests_name ("effects", tests, NULL, NULL);
 }

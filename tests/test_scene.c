@@ -288,6 +288,8 @@ static const bad_case bad_cases[] = {
   { "central 0 0 -5\n", 1, CAROM_ERR_BAD_ARGUMENT },
   { "central 0 0\n", 1, CAROM_ERR_SCENE_SYNTAX },
   { "damping -0.1\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "continuous 2\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 bullet static\nbox 1 1 bullet bullet\n", 2, CAROM_ERR_SCENE_SYNTAX },
   { "damping 1 2 3\n", 1, CAROM_ERR_SCENE_SYNTAX },
   { "effects\n", 1, CAROM_ERR_SCENE_SYNTAX },
   { "effects gravity warp\n", 1, CAROM_ERR_SCENE_SYNTAX },
@@ -540,7 +542,7 @@ static void test_effects_statements (void **state)
   (void) state;
   e = carom_world_get_effects (w);
   assert_int_equal (e, CAROM_EFFECT_CENTRAL_GRAVITY | CAROM_EFFECT_DAMPING | CAROM_EFFECT_SLEEPING
-                           | CAROM_EFFECT_FIXED_ROTATION);
+                           | CAROM_EFFECT_FIXED_ROTATION | CAROM_EFFECT_CONTINUOUS);
   box = body_at (w, 0);
   for (i = 0; i < 60; ++i)
     carom_world_update (w, 1.0 / 60);
@@ -548,6 +550,22 @@ static void test_effects_statements (void **state)
   assert_true (angle == 0.0);
   assert_status (carom_body_is_awake (w, box, &awake), CAROM_OK);
   assert_int_equal (awake, 1); /* falling towards the centre: not at rest */
+  carom_world_destroy (w);
+}
+
+/* `continuous 0` switches continuous collision off; `bullet` keeps it for
+ * one body (and the effect is then still reported, for that body). */
+static void test_continuous_statement (void **state)
+{
+  carom_world *w = load ("continuous 0\ncircle 0.5\n");
+  (void) state;
+  assert_int_equal (carom_world_get_effects (w), 0);
+  carom_world_destroy (w);
+  w = load ("continuous 0\ncircle 0.5 bullet\n");
+  assert_int_equal (carom_world_get_effects (w), CAROM_EFFECT_CONTINUOUS);
+  carom_world_destroy (w);
+  w = load ("circle 0.5\n");
+  assert_int_equal (carom_world_get_effects (w), CAROM_EFFECT_CONTINUOUS);
   carom_world_destroy (w);
 }
 
@@ -618,6 +636,7 @@ int main (void)
     cmocka_unit_test (test_locale_independent),
     cmocka_unit_test (test_file_errors),
     cmocka_unit_test (test_effects_statements),
+    cmocka_unit_test (test_continuous_statement),
     cmocka_unit_test (test_shipped_scenes),
     cmocka_unit_test (test_gas_starts_apart),
   };

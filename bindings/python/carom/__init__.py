@@ -284,6 +284,10 @@ class World:
         """Velocities decay as exp(-linear t), spins as exp(-angular t)."""
         _check(_lib.carom_world_set_damping(self._handle(), linear, angular), "damping")
 
+    def set_continuous(self, enabled):
+        """Continuous collision (on by default): fast bodies never tunnel."""
+        _check(_lib.carom_world_set_continuous(self._handle(), 1 if enabled else 0), "continuous")
+
     def set_sleeping(self, enabled):
         """Put bodies at rest to sleep (True) or wake everything (False)."""
         _check(_lib.carom_world_set_sleeping(self._handle(), 1 if enabled else 0), "sleeping")
@@ -437,6 +441,10 @@ class Body:
 
     def wake(self):
         _check(_lib.carom_body_wake(self._h(), self._id), "wake")
+
+    def set_bullet(self, bullet=True):
+        """Keep continuous collision for this body when the world's is off."""
+        _check(_lib.carom_body_set_bullet(self._h(), self._id, 1 if bullet else 0), "bullet")
 
     def set_fixed_rotation(self, fixed=True):
         """Make the body non-rotating (True) or rotating again (False)."""

@@ -135,6 +135,8 @@ PROTOTYPES = {
     "carom_world_set_central_gravity": (c_status, [_W, _D, _D, _D, _D]),
     "carom_world_set_damping": (c_status, [_W, _D, _D]),
     "carom_world_set_sleeping": (c_status, [_W, ctypes.c_int32]),
+    "carom_world_set_continuous": (c_status, [_W, ctypes.c_int32]),
+    "carom_body_set_bullet": (c_status, [_W, _ID, ctypes.c_int32]),
     "carom_body_is_awake": (c_status, [_W, _ID, ctypes.POINTER(ctypes.c_int32)]),
     "carom_body_wake": (c_status, [_W, _ID]),
     "carom_body_set_fixed_rotation": (c_status, [_W, _ID, ctypes.c_int32]),

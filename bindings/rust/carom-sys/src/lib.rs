@@ -218,6 +218,8 @@ extern "C" {
     pub fn carom_world_set_central_gravity(world: *mut carom_world, x: f64, y: f64, gm: f64, softening: f64) -> carom_status;
     pub fn carom_world_set_damping(world: *mut carom_world, linear: f64, angular: f64) -> carom_status;
     pub fn carom_world_set_sleeping(world: *mut carom_world, enabled: i32) -> carom_status;
+    pub fn carom_world_set_continuous(world: *mut carom_world, enabled: i32) -> carom_status;
+    pub fn carom_body_set_bullet(world: *mut carom_world, id: carom_body_id, bullet: i32) -> carom_status;
     pub fn carom_body_is_awake(world: *const carom_world, id: carom_body_id, awake: *mut i32) -> carom_status;
     pub fn carom_body_wake(world: *mut carom_world, id: carom_body_id) -> carom_status;
     pub fn carom_body_set_fixed_rotation(world: *mut carom_world, id: carom_body_id, fixed: i32) -> carom_status;
