@@ -419,6 +419,9 @@ static carom_status scene_do_central (scene_parser *p)
   p->central[3] = p->num_count > 3 ? p->num[3] : 0.0;
   if (p->central[2] < 0.0 || p->central[3] < 0.0)
     return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "central: GM and SOFTENING must be 0 or more");
+  if (fabs (p->central[0]) > CAROM_MAX_MAGNITUDE || fabs (p->central[1]) > CAROM_MAX_MAGNITUDE
+      || p->central[2] > CAROM_MAX_MAGNITUDE || p->central[3] > CAROM_MAX_MAGNITUDE)
+    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "central: values must not exceed %g", CAROM_MAX_MAGNITUDE);
   return CAROM_OK;
 }
 
@@ -436,6 +439,8 @@ static carom_status scene_do_damping (scene_parser *p)
   p->damping[1] = p->num_count > 1 ? p->num[1] : 0.0;
   if (p->damping[0] < 0.0 || p->damping[1] < 0.0)
     return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "damping: rates must be 0 or more");
+  if (p->damping[0] > CAROM_MAX_MAGNITUDE || p->damping[1] > CAROM_MAX_MAGNITUDE)
+    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "damping: rates must not exceed %g", CAROM_MAX_MAGNITUDE);
   return CAROM_OK;
 }
 

@@ -289,6 +289,8 @@ static const bad_case bad_cases[] = {
   { "central 0 0\n", 1, CAROM_ERR_SCENE_SYNTAX },
   { "damping -0.1\n", 1, CAROM_ERR_BAD_ARGUMENT },
   { "continuous 2\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1\ncentral 1e200 0 1\n", 2, CAROM_ERR_BAD_ARGUMENT },              /* beyond CAROM_MAX_MAGNITUDE */
+  { "circle 1\ndamping 1e101\n", 2, CAROM_ERR_BAD_ARGUMENT },
   { "circle 1 bullet static\nbox 1 1 bullet bullet\n", 2, CAROM_ERR_SCENE_SYNTAX },
   { "damping 1 2 3\n", 1, CAROM_ERR_SCENE_SYNTAX },
   { "effects\n", 1, CAROM_ERR_SCENE_SYNTAX },
