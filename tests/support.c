@@ -69,3 +69,23 @@ void world_momentum (const carom_world *world, double *px, double *py, double *l
     }
   free (ids);
 }
+
+uint64_t world_state_hash (const carom_world *world)
+{
+  carom_body_id ids[512];
+  int32_t n = carom_world_get_bodies (world, ids, 512), i;
+  uint64_t h = 1469598103934665603ull;
+  for (i = 0; i < n; ++i)
+    {
+      double s[6];
+      size_t k;
+      const unsigned char *bytes = (const unsigned char *) s;
+      carom_body_get_position (world, ids[i], &s[0], &s[1]);
+      carom_body_get_angle (world, ids[i], &s[2]);
+      carom_body_get_velocity (world, ids[i], &s[3], &s[4]);
+      carom_body_get_spin (world, ids[i], &s[5]);
+      for (k = 0; k < sizeof s; ++k)
+        h = (h ^ bytes[k]) * 1099511628211ull;
+    }
+  return h;
+}
