@@ -115,25 +115,29 @@ int controls_press (demo *d, double x, double y)
   return 1;
 }
 
+/* Move a held body to the pointer at screen (x, y); 0 when nothing is
+ * held. The pointer's world position goes to *wx, *wy. */
+static int controls_drag (demo *d, double x, double y, double *wx, double *wy)
+{
+  if (!d->entry || d->grab.body == CAROM_NULL_BODY)
+    return 0;
+  render_to_world (&d->opt, x, y, wx, wy);
+  grab_move (&d->grab, *wx, *wy, demo_now ());
+  controls_follow (d);
+  return 1;
+}
+
 int controls_motion (demo *d, double x, double y)
 {
   double wx, wy;
-  if (!d->entry || d->grab.body == CAROM_NULL_BODY)
-    return 0;
-  render_to_world (&d->opt, x, y, &wx, &wy);
-  grab_move (&d->grab, wx, wy, demo_now ());
-  controls_follow (d);
-  return 1;
+  return controls_drag (d, x, y, &wx, &wy);
 }
 
 int controls_release (demo *d, double x, double y)
 {
   double wx, wy;
-  if (!d->entry || d->grab.body == CAROM_NULL_BODY)
+  if (!controls_drag (d, x, y, &wx, &wy))
     return 0;
-  render_to_world (&d->opt, x, y, &wx, &wy);
-  grab_move (&d->grab, wx, wy, demo_now ());
-  controls_follow (d);
   if (d->verbose)
     {
       printf ("carom-demo: release at %.3f %.3f\n", wx, wy);

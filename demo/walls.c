@@ -7,6 +7,17 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The ids of all bodies (malloc'd, the caller frees), their count in *n. */
+static carom_body_id *walls_bodies (const carom_world *world, int32_t *n)
+{
+  carom_body_id *ids;
+  *n = carom_world_get_bodies (world, NULL, 0);
+  ids = malloc (((size_t) *n + 1) * sizeof *ids);
+  if (ids)
+    *n = carom_world_get_bodies (world, ids, *n);
+  return ids;
+}
+
 /* Centre and size of each wall for a box (x0, y0)-(x1, y1) with walls of
  * thickness t outside it; the floor and ceiling run past the corners, as in
  * the scene loader, so the box has no gaps. */
@@ -58,11 +69,9 @@ void walls_init (walls *w, const carom_world *world, const double rect[4], doubl
   w->friction = friction;
   walls_layout (w->x0, w->y0, w->x1, w->y1, w->thickness, centre, size);
   eps = 1e-9 * fmax (fmax (fabs (w->x0), fabs (w->x1)), fmax (fabs (w->y0), fabs (w->y1))) + 1e-12;
-  n = carom_world_get_bodies (world, NULL, 0);
-  ids = malloc (((size_t) n + 1) * sizeof *ids);
+  ids = walls_bodies (world, &n);
   if (!ids)
     return;
-  n = carom_world_get_bodies (world, ids, n);
   for (k = 0; k < WALL_COUNT; ++k)
     for (i = 0; i < n; ++i)
       if (walls_match (w, world, ids[i], centre[k][0], centre[k][1], eps))
@@ -126,11 +135,9 @@ static void walls_gather (const walls *w, carom_world *world, double old_right, 
 {
   carom_body_id *ids;
   int32_t n, i;
-  n = carom_world_get_bodies (world, NULL, 0);
-  ids = malloc (((size_t) n + 1) * sizeof *ids);
+  ids = walls_bodies (world, &n);
   if (!ids)
     return;
-  n = carom_world_get_bodies (world, ids, n);
   for (i = 0; i < n; ++i)
     {
       carom_body_type type = CAROM_STATIC;
@@ -159,11 +166,9 @@ static void walls_carry (const walls *w, carom_world *world, double old_right, d
   double tol = 1e-6 * fmax (w->x1 - w->x0, w->y1 - w->y0), dx = w->right - old_right, dy = w->top - old_top;
   carom_body_id *ids;
   int32_t n, i;
-  n = carom_world_get_bodies (world, NULL, 0);
-  ids = malloc (((size_t) n + 1) * sizeof *ids);
+  ids = walls_bodies (world, &n);
   if (!ids)
     return;
-  n = carom_world_get_bodies (world, ids, n);
   for (i = 0; i < n; ++i)
     {
       carom_body_type type = CAROM_DYNAMIC;
