@@ -18,6 +18,7 @@
 
 #include "accuracy.h"
 #include "carom.h"
+#include "carom_scene.h"
 
 /* ------------------------------------------------------------ engine */
 
@@ -62,15 +63,7 @@ static void *carom_create (const bench_scene *s, const acc_settings *set)
   h->map = calloc ((size_t) s->count + 1, sizeof *h->map);
   h->count = s->count;
   h->dt = set->dt;
-  if (carom_world_def_init (&def, sizeof def) != CAROM_OK)
-    {
-      carom_destroy (h);
-      return NULL;
-    }
-  def.gravity_x = s->gravity_x;
-  def.gravity_y = s->gravity_y;
-  def.restitution = s->restitution;
-  def.friction = s->friction;
+  bench_carom_def (&def, s);
   def.substeps = set->substeps;
   def.iterations = set->iterations;
   def.position_correction = set->position_correction;
@@ -82,34 +75,18 @@ static void *carom_create (const bench_scene *s, const acc_settings *set)
       carom_destroy (h);
       return NULL;
     }
+  {
+    int failed = 0;
+    carom_status st = bench_carom_add_bodies (h->world, s, h->ids, &failed);
+    if (st != CAROM_OK)
+      {
+        fprintf (stderr, "accuracy: body %d of %s: %s\n", failed, s->name, carom_status_string (st));
+        carom_destroy (h);
+        return NULL;
+      }
+  }
   for (i = 0; i < s->count; ++i)
-    {
-      const bench_body *b = &s->bodies[i];
-      carom_body_def bd;
-      carom_status st;
-      if (carom_body_def_init (&bd, sizeof bd) != CAROM_OK)
-        {
-          carom_destroy (h);
-          return NULL;
-        }
-      bd.type = b->is_static ? CAROM_STATIC : CAROM_DYNAMIC;
-      bd.x = b->x, bd.y = b->y, bd.angle = b->angle;
-      bd.vx = b->vx, bd.vy = b->vy, bd.spin = b->spin;
-      bd.density = s->density;
-      if (b->shape == BENCH_BOX)
-        st = carom_world_add_box (h->world, &bd, b->w, b->h, &h->ids[i]);
-      else if (b->shape == BENCH_REGULAR)
-        st = carom_world_add_regular (h->world, &bd, b->sides, b->side, &h->ids[i]);
-      else
-        st = carom_world_add_circle (h->world, &bd, b->radius, &h->ids[i]);
-      if (st != CAROM_OK)
-        {
-          fprintf (stderr, "accuracy: body %d of %s: %s\n", i, s->name, carom_status_string (st));
-          carom_destroy (h);
-          return NULL;
-        }
-      h->map[i].id = h->ids[i], h->map[i].index = i;
-    }
+    h->map[i].id = h->ids[i], h->map[i].index = i;
   qsort (h->map, (size_t) s->count, sizeof *h->map, by_id);
   return h;
 }

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "carom.h"
+#include "carom_scene.h"
 #include "scenes.h"
 
 typedef struct counter {
@@ -42,12 +43,9 @@ static int build (carom_world **world, const bench_scene *s, const bench_options
                   carom_body_id *ids)
 {
   carom_world_def def;
-  int i;
-  carom_world_def_init (&def, sizeof def);
-  def.gravity_x = s->gravity_x;
-  def.gravity_y = s->gravity_y;
-  def.restitution = s->restitution;
-  def.friction = s->friction;
+  carom_status st;
+  int failed = 0;
+  bench_carom_def (&def, s);
   if (o->substeps > 0)
     def.substeps = o->substeps;
   if (o->iterations > 0)
@@ -60,27 +58,11 @@ static int build (carom_world **world, const bench_scene *s, const bench_options
     }
   if (carom_world_init (world, &def) != CAROM_OK)
     return -1;
-  for (i = 0; i < s->count; ++i)
+  st = bench_carom_add_bodies (*world, s, ids, &failed);
+  if (st != CAROM_OK)
     {
-      const bench_body *b = &s->bodies[i];
-      carom_body_def bd;
-      carom_status st;
-      carom_body_def_init (&bd, sizeof bd);
-      bd.type = b->is_static ? CAROM_STATIC : CAROM_DYNAMIC;
-      bd.x = b->x, bd.y = b->y, bd.angle = b->angle;
-      bd.vx = b->vx, bd.vy = b->vy, bd.spin = b->spin;
-      bd.density = s->density;
-      if (b->shape == BENCH_BOX)
-        st = carom_world_add_box (*world, &bd, b->w, b->h, &ids[i]);
-      else if (b->shape == BENCH_REGULAR)
-        st = carom_world_add_regular (*world, &bd, b->sides, b->side, &ids[i]);
-      else
-        st = carom_world_add_circle (*world, &bd, b->radius, &ids[i]);
-      if (st != CAROM_OK)
-        {
-          fprintf (stderr, "bench_carom: body %d: %s\n", i, carom_status_string (st));
-          return -1;
-        }
+      fprintf (stderr, "bench_carom: body %d: %s\n", failed, carom_status_string (st));
+      return -1;
     }
   return 0;
 }

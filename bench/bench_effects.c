@@ -34,6 +34,7 @@
 #include <string.h>
 
 #include "carom.h"
+#include "carom_scene.h"
 #include "scenes.h"
 
 #define DT (1.0 / 60.0)
@@ -193,37 +194,18 @@ static int build (run *r, const bench_scene *s)
 {
   carom_world_def def;
   carom_status st;
-  int i;
-  carom_world_def_init (&def, sizeof def);
-  def.gravity_x = s->gravity_x;
-  def.gravity_y = s->gravity_y;
-  def.restitution = s->restitution;
-  def.friction = s->friction;
+  int failed = 0;
+  bench_carom_def (&def, s);
   if (carom_world_init (&r->world, &def) != CAROM_OK)
     return -1;
   r->ids = calloc ((size_t) s->count, sizeof *r->ids);
   if (!r->ids)
     return -1;
-  for (i = 0; i < s->count; ++i)
+  st = bench_carom_add_bodies (r->world, s, r->ids, &failed);
+  if (st != CAROM_OK)
     {
-      const bench_body *b = &s->bodies[i];
-      carom_body_def bd;
-      carom_body_def_init (&bd, sizeof bd);
-      bd.type = b->is_static ? CAROM_STATIC : CAROM_DYNAMIC;
-      bd.x = b->x, bd.y = b->y, bd.angle = b->angle;
-      bd.vx = b->vx, bd.vy = b->vy, bd.spin = b->spin;
-      bd.density = s->density;
-      if (b->shape == BENCH_BOX)
-        st = carom_world_add_box (r->world, &bd, b->w, b->h, &r->ids[i]);
-      else if (b->shape == BENCH_REGULAR)
-        st = carom_world_add_regular (r->world, &bd, b->sides, b->side, &r->ids[i]);
-      else
-        st = carom_world_add_circle (r->world, &bd, b->radius, &r->ids[i]);
-      if (st != CAROM_OK)
-        {
-          fprintf (stderr, "bench_effects: body %d: %s\n", i, carom_status_string (st));
-          return -1;
-        }
+      fprintf (stderr, "bench_effects: body %d: %s\n", failed, carom_status_string (st));
+      return -1;
     }
   st = apply (r->world, r->v, s, r->ids);
   if (st != CAROM_OK)

@@ -43,7 +43,7 @@ $(ACC_DIR)/%.o: bench/peers/%.cpp
 	@mkdir -p $(@D)
 	$(CXX) $(CPPFLAGS) -Ibench $(ACC_CXXFLAGS) $(OPT) $(CXXFLAGS) -c $< -o $@
 
-$(ACC_DIR)/accuracy: $(ACC_DIR)/accuracy.o $(ACC_COMMON) $(BUILD)/libcarom.a
+$(ACC_DIR)/accuracy: $(ACC_DIR)/accuracy.o $(ACC_DIR)/carom_scene.o $(ACC_COMMON) $(BUILD)/libcarom.a
 	$(CC) $(LDFLAGS) -o $@ $^ -lm
 
 $(ACC_DIR)/accuracy_chipmunk: $(ACC_DIR)/accuracy_chipmunk.o $(ACC_COMMON)

@@ -42,7 +42,7 @@ $(BENCH_DIR)/%.o: bench/peers/%.cpp bench/scenes.h
 	@mkdir -p $(@D)
 	$(CXX) $(CPPFLAGS) -Ibench $(BENCH_CXXFLAGS) $(OPT) $(CXXFLAGS) -c $< -o $@
 
-$(BENCH_DIR)/bench_carom: $(BENCH_DIR)/bench_carom.o $(BENCH_DIR)/scenes.o $(BUILD)/libcarom.a
+$(BENCH_DIR)/bench_carom: $(BENCH_DIR)/bench_carom.o $(BENCH_DIR)/carom_scene.o $(BENCH_DIR)/scenes.o $(BUILD)/libcarom.a
 	$(CC) $(LDFLAGS) -o $@ $^ -lm
 
 $(BENCH_DIR)/bench_broadphase: $(BENCH_DIR)/bench_broadphase.o $(BENCH_DIR)/scenes.o $(BUILD)/libcarom.a

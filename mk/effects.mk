@@ -20,6 +20,6 @@ $(EFF_DIR)/%.o: bench/%.c bench/scenes.h
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Ibench $(WARN) $(OPT) $(CFLAGS) -c $< -o $@
 
-$(EFF_DIR)/bench_effects: $(EFF_DIR)/bench_effects.o $(EFF_DIR)/scenes.o $(BUILD)/libcarom.a
+$(EFF_DIR)/bench_effects: $(EFF_DIR)/bench_effects.o $(EFF_DIR)/carom_scene.o $(EFF_DIR)/scenes.o $(BUILD)/libcarom.a
 	$(CC) $(LDFLAGS) -o $@ $^ -lm
 bench: bench-effects
