@@ -33,17 +33,8 @@ void *b2_create (const bench_scene *s, const acc_settings *set)
   for (int i = 0; i < s->count; ++i)
     {
       const bench_body *b = &s->bodies[i];
-      b2BodyDef bd;
-      bd.type = b->is_static ? b2_staticBody : b2_dynamicBody;
-      bd.position.Set ((float) b->x, (float) b->y);
-      bd.angle = (float) b->angle;
-      if (!b->is_static)
-        {
-          bd.linearVelocity.Set ((float) b->vx, (float) b->vy);
-          bd.angularVelocity = (float) b->spin;
-        }
-      bd.userData.pointer = (uintptr_t) i;
-      h->bodies[(size_t) i] = h->world->CreateBody (&bd);
+      h->bodies[(size_t) i] = create_body (h->world, b);
+      h->bodies[(size_t) i]->GetUserData ().pointer = (uintptr_t) i;
       add_fixture (h->bodies[(size_t) i], b, s, threshold);
     }
   return h;

@@ -47,6 +47,22 @@ static void add_fixture (b2Body *body, const bench_body *b, const bench_scene *s
   body->CreateFixture (&fd);
 }
 
+// A body of the scene as Box2D's: its type, pose and velocities (shapes
+// come from add_fixture).
+static b2Body *create_body (b2World *world, const bench_body *b)
+{
+  b2BodyDef bd;
+  bd.type = b->is_static ? b2_staticBody : b2_dynamicBody;
+  bd.position.Set ((float) b->x, (float) b->y);
+  bd.angle = (float) b->angle;
+  if (!b->is_static)
+    {
+      bd.linearVelocity.Set ((float) b->vx, (float) b->vy);
+      bd.angularVelocity = (float) b->spin;
+    }
+  return world->CreateBody (&bd);
+}
+
 static double kinetic (const std::vector<b2Body *> &bodies, const bench_scene &s)
 {
   double e = 0.0;
@@ -80,16 +96,7 @@ int main (int argc, char **argv)
   for (int i = 0; i < s.count; ++i)
     {
       const bench_body *b = &s.bodies[i];
-      b2BodyDef bd;
-      bd.type = b->is_static ? b2_staticBody : b2_dynamicBody;
-      bd.position.Set ((float) b->x, (float) b->y);
-      bd.angle = (float) b->angle;
-      if (!b->is_static)
-        {
-          bd.linearVelocity.Set ((float) b->vx, (float) b->vy);
-          bd.angularVelocity = (float) b->spin;
-        }
-      bodies[i] = world->CreateBody (&bd);
+      bodies[i] = create_body (world, b);
       add_fixture (bodies[i], b, &s, threshold);
     }
 
