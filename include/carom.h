@@ -54,7 +54,7 @@ typedef enum carom_status {
   CAROM_ERR_NULL_ARGUMENT = 1,      /**< a required pointer was NULL */
   CAROM_ERR_NOT_FINITE = 2,         /**< a number was NaN or infinite */
   CAROM_ERR_BAD_SIZE = 3,           /**< a size or radius was zero or negative */
-  CAROM_ERR_BAD_DENSITY = 4,        /**< density was zero or negative */
+  CAROM_ERR_BAD_DENSITY = 4,        /**< density zero or negative, or a mass out of range */
   CAROM_ERR_TOO_FEW_VERTICES = 5,   /**< a polygon needs at least 3 vertices */
   CAROM_ERR_TOO_MANY_VERTICES = 6,  /**< more than CAROM_MAX_POLYGON_VERTICES */
   CAROM_ERR_REPEATED_VERTEX = 7,    /**< two consecutive vertices coincide */
@@ -246,9 +246,10 @@ CAROM_API carom_status carom_body_def_init (carom_body_def *def,
 /**
  * Add a circle of radius `radius` centred on (def->x, def->y). Inertia
  * m r^2 / 2. Sizes (radius, width, height, side, polygon extent) must lie
- * between 1e-60 and 1e60 length units, and mass and inertia must come out
- * as positive finite numbers (BAD_SIZE, or BAD_DENSITY when the density is
- * what makes them leave that range). `def` may be NULL for the defaults. On success *id names the new
+ * between 1e-60 and 1e60 length units, a dynamic body's mass between
+ * 1e-200 and 1e200 and its inertia between 1e-300 and the largest double
+ * (BAD_SIZE, or BAD_DENSITY when the density is what makes them leave that
+ * range). `def` may be NULL for the defaults. On success *id names the new
  * body (id may be NULL). Errors: NULL_ARGUMENT, BAD_STRUCT_SIZE, NOT_FINITE,
  * BAD_SIZE, BAD_DENSITY, BAD_ARGUMENT, TOO_MANY_BODIES, OUT_OF_MEMORY.
  */

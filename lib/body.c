@@ -140,9 +140,14 @@ static carom_status check_mass (const carom_body_def *def, const shape *s, doubl
   if (!(s->area > 0.0) || !is_finite (s->area) || !(inertia_unit > 0.0) || !is_finite (inertia_unit)
       || !(s->size > 0.0) || !is_finite (s->bound_radius))
     return CAROM_ERR_BAD_SIZE;
+  /* A mass outside [1e-200, 1e200], or an inertia below 1e-300, is
+   * refused: a body of mass 1e-308 (finite, and so is its inverse) has
+   * inverse masses so close to overflow that eq. 3.23's denominator
+   * overflows at some points of a contact and not at others, and the
+   * world turned to NaN. Sizes from 1e-60 to 1e60 at densities from 1e-30
+   * to 1e30 stay well inside. */
   if (def->type == CAROM_DYNAMIC
-      && (!(m > 0.0) || !is_finite (m) || !(inertia > 0.0) || !is_finite (inertia) || !is_finite (1.0 / m)
-          || !is_finite (1.0 / inertia)))
+      && (!(m >= MIN_MASS && m <= MAX_MASS) || !(inertia >= MIN_INERTIA) || !is_finite (inertia)))
     return CAROM_ERR_BAD_DENSITY;
   return CAROM_OK;
 }

@@ -13,8 +13,8 @@ const char *carom_status_string (carom_status status)
     case CAROM_OK: return "ok";
     case CAROM_ERR_NULL_ARGUMENT: return "a required pointer argument is NULL";
     case CAROM_ERR_NOT_FINITE: return "a number is NaN or infinite";
-    case CAROM_ERR_BAD_SIZE: return "a size or radius is zero or negative";
-    case CAROM_ERR_BAD_DENSITY: return "density must be positive";
+    case CAROM_ERR_BAD_SIZE: return "a size is zero, negative or outside [1e-60, 1e60]";
+    case CAROM_ERR_BAD_DENSITY: return "density must be positive and give a mass in [1e-200, 1e200]";
     case CAROM_ERR_TOO_FEW_VERTICES: return "a polygon needs at least 3 vertices";
     case CAROM_ERR_TOO_MANY_VERTICES: return "too many vertices (limit CAROM_MAX_POLYGON_VERTICES)";
     case CAROM_ERR_REPEATED_VERTEX: return "two consecutive vertices coincide";

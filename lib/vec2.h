@@ -76,6 +76,10 @@ static inline int is_finite (double x) { return isfinite (x) != 0; }
  * acceleration or time step (CAROM_MAX_MAGNITUDE): products of a few such
  * numbers, which the solver forms, stay within doubles. */
 #define MAX_MAGNITUDE 1e100
+/* The masses a dynamic body may have (carom_world_add_*: BAD_DENSITY). */
+#define MIN_MASS 1e-200
+#define MAX_MASS 1e200
+#define MIN_INERTIA 1e-300
 static inline int is_moderate (double x) { return x >= -MAX_MAGNITUDE && x <= MAX_MAGNITUDE; }
 
 #endif

@@ -254,6 +254,36 @@ static void test_bad_shapes_and_defs (void **state)
   assert_int_equal (carom_world_body_count (w), 0);
 }
 
+/* A dynamic body's mass must lie in [1e-200, 1e200]: a U of density 1.5e-309
+ * (mass 1e-308, its inverse still finite) once made eq. 3.23's denominator
+ * overflow for some points of a contact and not others, and the world turned
+ * to NaN. Static bodies have no mass to bound. */
+static void test_mass_range (void **state)
+{
+  static const double u[] = { 0, 0, 3, 0, 3, 3, 2, 3, 2, 1, 1, 1, 1, 3, 0, 3 }; /* area 7 */
+  carom_world *w = *state;
+  carom_body_def def;
+  carom_body_id id;
+  double m;
+  carom_body_def_init (&def, sizeof def);
+  def.density = 1e-200;
+  assert_status (carom_world_add_box (w, &def, 1.0, 1.0, &id), CAROM_OK);
+  assert_status (carom_body_get_mass (w, id, &m, NULL, NULL), CAROM_OK);
+  assert_true (m == 1e-200);
+  def.density = 0.99e-200;
+  assert_status (carom_world_add_box (w, &def, 1.0, 1.0, NULL), CAROM_ERR_BAD_DENSITY);
+  def.density = 1e200;
+  assert_status (carom_world_add_box (w, &def, 1.0, 1.0, NULL), CAROM_OK);
+  def.density = 1.01e200;
+  assert_status (carom_world_add_box (w, &def, 1.0, 1.0, NULL), CAROM_ERR_BAD_DENSITY);
+  def.density = 1.455901395071813e-309;
+  assert_status (carom_world_add_polygon (w, &def, u, 8, NULL), CAROM_ERR_BAD_DENSITY);
+  assert_int_equal (carom_world_body_count (w), 2);
+  def.type = CAROM_STATIC;
+  assert_status (carom_world_add_polygon (w, &def, u, 8, NULL), CAROM_OK);
+  assert_int_equal (carom_world_body_count (w), 3);
+}
+
 static void test_stale_ids (void **state)
 {
   carom_world *w = *state;
@@ -305,6 +335,7 @@ int main (void)
     cmocka_unit_test_setup_teardown (test_static_body_has_no_inverse_infinity, world_setup, world_teardown),
     cmocka_unit_test_setup_teardown (test_bad_polygons, world_setup, world_teardown),
     cmocka_unit_test_setup_teardown (test_bad_shapes_and_defs, world_setup, world_teardown),
+    cmocka_unit_test_setup_teardown (test_mass_range, world_setup, world_teardown),
     cmocka_unit_test_setup_teardown (test_stale_ids, world_setup, world_teardown),
     cmocka_unit_test_setup_teardown (test_setters_refuse_non_finite, world_setup, world_teardown),
   };
