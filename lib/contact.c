@@ -119,6 +119,10 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
           {
             p->normal_impulse = c->old[old].points[j].normal_impulse;
             p->tangent_impulse = c->old[old].points[j].tangent_impulse;
+            /* the effective masses they were found with (the solver
+             * rescales them if the geometry changed, see prepare) */
+            p->normal_mass = c->old[old].points[j].normal_mass;
+            p->tangent_mass = c->old[old].points[j].tangent_mass;
             break;
           }
     }

@@ -169,12 +169,14 @@ static void prepare (carom_world *world, double h)
       contact *k = &c->list[i];
       body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
-      double vn[MANIFOLD_MAX_POINTS];
+      double vn[MANIFOLD_MAX_POINTS], old_nm[MANIFOLD_MAX_POINTS], old_tm[MANIFOLD_MAX_POINTS];
       int impact = 0;
       ba->touching = bb->touching = 1;
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
+          old_nm[j] = p->normal_mass;
+          old_tm[j] = p->tangent_mass;
           lever_arms (p, ba, bb, v2_sub (p->point, ba->p), v2_sub (p->point, bb->p));
           p->normal_mass = effective_mass (a, b, p->rn_a, p->rn_b); /* eq. 3.23's denominator */
           p->tangent_mass = effective_mass (a, b, p->rt_a, p->rt_b);
@@ -248,6 +250,20 @@ static void prepare (carom_world *world, double h)
           k->points[j].normal_impulse = k->points[j].tangent_impulse = 0.0;
       else
         set_targets (k, vn, impact, h);
+      /* A warm-start impulse changes the velocities by impulse / mass. If
+       * the effective mass fell since last step (a lever arm that grew, as
+       * across a long speculative gap), last step's impulse would now give a
+       * larger change than it ever did: it is scaled down to give the same
+       * one. Otherwise a tiny body whose arm grew a thousandfold would be
+       * spun a millionfold faster at once, and then overflow. */
+      for (j = 0; j < k->count; ++j)
+        {
+          contact_point *p = &k->points[j];
+          if (p->normal_mass < old_nm[j])
+            p->normal_impulse *= p->normal_mass / old_nm[j];
+          if (p->tangent_mass < old_tm[j])
+            p->tangent_impulse *= p->tangent_mass / old_tm[j];
+        }
     }
   /* warm start with last step's impulses, only once every target above was
    * measured on the velocities before any impulse */
