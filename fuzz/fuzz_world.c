@@ -47,6 +47,13 @@
 /* Bit sets of statuses. */
 #define BIT(s) (1u << (s))
 
+/* Build with -DFUZZ_TRACE to replay a finding call by call on stderr. */
+#ifdef FUZZ_TRACE
+#define TRACE(...) fprintf (stderr, __VA_ARGS__)
+#else
+#define TRACE(...) ((void) 0)
+#endif
+
 typedef struct fuzz_world {
   fuzz_input in;
   carom_world *w;
@@ -188,6 +195,9 @@ static void make_world (fuzz_world *f)
   ok.position_correction = in_range (d.position_correction, 0.0, 1.0) ? d.position_correction : 0.2;
   ok.slop = in_range (d.slop, 0.0, 1.0) ? d.slop : 0.01;
   ok.narrow_phase = (extra & 1) ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
+  TRACE ("world: gravity (%.17g, %.17g) e %.17g mu %.17g substeps %d iterations %d correction %.17g slop %.17g "
+         "narrow %d\n", ok.gravity_x, ok.gravity_y, ok.restitution, ok.friction, (int) ok.substeps,
+         (int) ok.iterations, ok.position_correction, ok.slop, (int) ok.narrow_phase);
   if (carom_world_init (&f->w, &ok) != CAROM_OK)
     FUZZ_FINDING ("world_init of a clamped def failed");
 }
@@ -309,6 +319,9 @@ static void add_fuzzed_body (fuzz_world *f)
       }
       break;
     }
+  TRACE ("add kind %d type %d size %.17g x %.17g n %d density %.17g at (%.17g, %.17g) angle %.17g v (%.17g, %.17g) "
+         "spin %.17g e %.17g mu %.17g: status %d\n", kind, (int) d.type, size1, size2, (int) n, d.density, d.x, d.y,
+         d.angle, d.vx, d.vy, d.spin, d.restitution, d.friction, (int) s);
   if (!fuzz_known_status (s))
     FUZZ_FINDING ("add (kind %d) returned unknown status %d", kind, (int) s);
 
@@ -411,6 +424,7 @@ static void op_update (fuzz_world *f)
       return;
     }
   dt = dt < DT_MIN ? DT_MIN : dt > DT_MAX ? DT_MAX : dt;
+  TRACE ("update %.17g\n", dt);
   s = carom_world_update (f->w, dt);
   if (s != CAROM_OK)
     FUZZ_FINDING ("update with dt %g returned %d (%s)", dt, (int) s, carom_status_string (s));
@@ -425,6 +439,7 @@ static void op_remove (fuzz_world *f)
     return;
   k = fuzz_u8 (&f->in) % f->count;
   id = f->ids[k];
+  TRACE ("remove body %d\n", k);
   if (carom_world_remove_body (f->w, id) != CAROM_OK)
     FUZZ_FINDING ("remove of a live body failed");
   f->ids[k] = f->ids[--f->count];
@@ -453,6 +468,7 @@ static void op_set (fuzz_world *f)
     return;
   if (what != 4)
     carom_body_get_type (f->w, id, &type);
+  TRACE ("set %d body %d (%.17g, %.17g)\n", what, k, a, b);
   read_states (f, before);
   switch (what)
     {
@@ -505,6 +521,7 @@ static void op_effects (fuzz_world *f)
   int32_t awake = -1;
   if (what == 2)
     c = fuzz_number (&f->in, 0), d = fuzz_number (&f->in, 0);
+  TRACE ("effect %d body %d (%.17g, %.17g, %.17g, %.17g)\n", what, k, a, b, c, d);
   read_states (f, before);
   switch (what)
     {

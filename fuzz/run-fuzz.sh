@@ -1,13 +1,17 @@
 #!/bin/sh
-# Run each libFuzzer target for a bounded time on its committed seed corpus
-# and report how many inputs it executed; fail on any finding.
-# Usage: fuzz/run-fuzz.sh FUZZ_DIR SECONDS "EXTRA LIBFUZZER FLAGS" TARGET...
+# Run each libFuzzer target on its committed seed corpus and report how many
+# inputs it executed; fail on any finding.
+# Usage: fuzz/run-fuzz.sh FUZZ_DIR LIMIT "EXTRA LIBFUZZER FLAGS" TARGET...
 #
-# New inputs go to FUZZ_DIR/corpus/TARGET (the working corpus, kept between
-# runs); fuzz/corpus/TARGET, the committed seeds, is only read. A finding is
-# saved as FUZZ_DIR/artifacts/TARGET-crash-... (or leak-, timeout-, oom-):
-# replay it with FUZZ_DIR/fuzz_TARGET FILE.
-dir=$1 seconds=$2 extra=$3
+# LIMIT is a number of seconds per target (make fuzz: the search goes on from
+# where the last run left it, new inputs kept in FUZZ_DIR/corpus/TARGET), or
+# `smoke` (make check and CI): a fixed number of runs per target from the
+# committed seeds alone, with -seed=1, so every machine tries exactly the same
+# inputs whatever its speed, and a finding fails every run, not one in a few.
+# fuzz/corpus/TARGET, the committed seeds, is only read. A finding is saved
+# as FUZZ_DIR/artifacts/TARGET-crash-... (or leak-, timeout-, oom-): replay it
+# with FUZZ_DIR/fuzz_TARGET FILE.
+dir=$1 limit=$2 extra=$3
 shift 3
 total=0 bad=""
 for t in "$@"; do
@@ -16,14 +20,28 @@ for t in "$@"; do
   polygon) max_len=20000; dict="" ;;
   *) max_len=4096; dict="" ;;
   esac
-  mkdir -p "$dir/corpus/$t" "$dir/artifacts"
+  if [ "$limit" = smoke ]; then
+    # about 10 s each on one core of this machine
+    case $t in
+    scene) bound="-runs=30000" ;;
+    polygon) bound="-runs=1500" ;;
+    *) bound="-runs=20000" ;;
+    esac
+    bound="$bound -seed=1"
+    work="$dir/smoke-corpus/$t"
+    rm -rf "$work"
+  else
+    bound="-max_total_time=$limit"
+    work="$dir/corpus/$t"
+  fi
+  mkdir -p "$work" "$dir/artifacts"
   log="$dir/fuzz_$t.log"
   # -timeout: one input running longer is a finding (a hang);
   # -rss_limit_mb: so is using more memory than this
   # shellcheck disable=SC2086
-  "$dir/fuzz_$t" -max_total_time="$seconds" -max_len=$max_len -timeout=25 -rss_limit_mb=2048 \
+  "$dir/fuzz_$t" $bound -max_len=$max_len -timeout=25 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$dir/artifacts/$t-" $dict $extra \
-    "$dir/corpus/$t" "fuzz/corpus/$t" >"$log" 2>&1
+    "$work" "fuzz/corpus/$t" >"$log" 2>&1
   rc=$?
   runs=$(sed -n 's/^Done \([0-9]*\) runs in \([0-9]*\) second.*/\1/p' "$log" | tail -n 1)
   secs=$(sed -n 's/^Done \([0-9]*\) runs in \([0-9]*\) second.*/\2/p' "$log" | tail -n 1)
@@ -35,7 +53,7 @@ for t in "$@"; do
     continue
   fi
   total=$((total + runs))
-  echo "fuzz: $t: $runs runs in $secs s, no finding ($cov, corpus $(ls "$dir/corpus/$t" | wc -l) files)"
+  echo "fuzz: $t: $runs runs in $secs s, no finding ($cov, corpus $(ls "$work" | wc -l) files)"
 done
 if [ -n "$bad" ]; then
   echo "fuzz: FAILED:$bad (inputs in $dir/artifacts/)"
