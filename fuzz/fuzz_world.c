@@ -20,7 +20,8 @@
  *      values beyond CAROM_MAX_MAGNITUDE with BAD_ARGUMENT, and nothing
  *      changed; STATIC_BODY for a static body's velocity), the effects
  *      (restitution, friction, central gravity, damping, sleeping, fixed
- *      rotation, wake), add a body, detect, calls with stale and made-up ids.
+ *      rotation, wake, continuous collision for the world or one body), add
+ *      a body, detect, calls with stale and made-up ids.
  * After every operation every body's state and every contact must be finite.
  *
  * Extreme but finite values are fed to every call. include/carom.h bounds
@@ -512,7 +513,7 @@ static void op_set (fuzz_world *f)
 static void op_effects (fuzz_world *f)
 {
   state before[64];
-  uint8_t what = fuzz_u8 (&f->in) % 7;
+  uint8_t what = fuzz_u8 (&f->in) % 9;
   double a = fuzz_number (&f->in, 0), b = fuzz_number (&f->in, 0), c = 0.0, d = 0.0;
   int k = f->count ? fuzz_u8 (&f->in) % f->count : 0;
   unsigned problems = 0;
@@ -566,6 +567,14 @@ static void op_effects (fuzz_world *f)
         problems = BIT (CAROM_ERR_STATIC_BODY);
       else if (s == CAROM_OK)
         f->fixed[k] = a > 0.0;
+      break;
+    case 7:
+      s = carom_world_set_continuous (f->w, a > 0.0);
+      break;
+    case 8:
+      if (f->count == 0)
+        return;
+      s = carom_body_set_bullet (f->w, f->ids[k], a > 0.0);
       break;
     default:
       if (f->count == 0)
