@@ -147,7 +147,7 @@ static int settings_default (acc_settings *set)
   set->position_correction = def.position_correction;
   set->slop = def.slop;
   set->narrow_phase = def.narrow_phase == CAROM_NARROW_VERTEX_EDGE;
-  set->continuous = 1;
+  set->continuous = 0;
   set->dt = 1.0 / 60.0;
   return 0;
 }
@@ -271,14 +271,14 @@ static void knob (sweep *w, const char *only, knob_id k, const char *name, const
     }
 }
 
-static void preset (sweep *w, const char *only, const char *name, int substeps, int iterations)
+static void preset (sweep *w, const char *only, const char *name, int substeps, int iterations, int continuous)
 {
   acc_settings set = w->def;
   if (!wanted (only, "preset"))
     return;
   strcpy (set.knob, "preset");
   strcpy (set.value, name);
-  set.substeps = substeps, set.iterations = iterations;
+  set.substeps = substeps, set.iterations = iterations, set.continuous = continuous;
   fprintf (stderr, "accuracy: preset %s\n", name);
   run_setting (w, &set, NULL);
 }
@@ -287,7 +287,7 @@ int main (int argc, char **argv)
 {
   static const double substeps[] = { 1, 2, 4, 8 }, iterations[] = { 2, 4, 8, 16, 32 },
                       correction[] = { 0.05, 0.1, 0.2, 0.4, 0.8 }, slop[] = { 0.001, 0.005, 0.01, 0.02 },
-                      narrow[] = { 0, 1 }, continuous[] = { 1, 0 }, rate[] = { 30, 60, 120, 240 };
+                      narrow[] = { 0, 1 }, continuous[] = { 0, 1 }, rate[] = { 30, 60, 120, 240 };
   const char *only = NULL;
   sweep w;
   int i;
@@ -348,8 +348,8 @@ int main (int argc, char **argv)
   knob (&w, only, K_NARROW, "narrow_phase", narrow, 2);
   knob (&w, only, K_CONTINUOUS, "continuous", continuous, 2);
   knob (&w, only, K_DT, "dt", rate, 4);
-  preset (&w, only, "fast", 1, 4);
-  preset (&w, only, "precise", 4, 8);
+  preset (&w, only, "fast", 1, 4, 0);
+  preset (&w, only, "precise", 4, 8, 1);
   free (w.ref[0]);
   free (w.ref[1]);
   if (w.failures)

@@ -31,7 +31,7 @@ typedef struct acc_settings {
   int substeps, iterations;
   double position_correction, slop;
   int narrow_phase; /* 0: SAT, 1: vertex-edge (carom's enum values) */
-  int continuous;   /* carom_world_set_continuous (on by default) */
+  int continuous;   /* carom_world_set_continuous (off by default) */
   double dt;
 } acc_settings;
 

@@ -51,7 +51,7 @@ typedef enum change {
   CH_DAMPING,     /* a, b: linear, angular */
   CH_SLEEPING,
   CH_FIXED,       /* fixed rotation on every dynamic body */
-  CH_CONTINUOUS_OFF /* continuous collision (on by default) off */
+  CH_CONTINUOUS   /* continuous collision on */
 } change;
 
 typedef struct variant {
@@ -83,8 +83,7 @@ static const variant variants[] = {
   { "gas", "fixed", "on", CH_FIXED, 0, 0, 0, 0, "+ fixed rotation on every body" },
   { "gas", "restitution-0.5", "on", CH_RESTITUTION, 0.5, 0, 0, 0, "restitution 0.5 instead of 1" },
   { "gas", "restitution-0", "stage-off", CH_RESTITUTION, 0, 0, 0, 0, "restitution 0: the stage off" },
-  { "gas", "continuous-off", "stage-off", CH_CONTINUOUS_OFF, 0, 0, 0, 0,
-    "continuous collision off (it is on by default)" },
+  { "gas", "continuous", "on", CH_CONTINUOUS, 0, 0, 0, 0, "+ continuous collision" },
   { "pyramid", "off", "off", CH_NONE, 0, 0, 0, 0, "the scene as defined: gravity -10, friction 0.6, e = 0" },
   { "pyramid", "friction-0", "stage-off", CH_FRICTION, 0, 0, 0, 0, "friction 0: the stage off" },
   { "pyramid", "sleeping", "on", CH_SLEEPING, 0, 0, 0, 0, "+ sleeping" },
@@ -95,8 +94,7 @@ static const variant variants[] = {
   { "pyramid", "central-tiny", "idle", CH_CENTRAL, 0, -20, 1e-300, 0, "+ central gravity, gm 1e-300" },
   { "pyramid", "restitution-0.5", "on", CH_RESTITUTION, 0.5, 0, 0, 0, "+ restitution 0.5" },
   { "pyramid", "fixed", "idle", CH_FIXED, 0, 0, 0, 0, "+ fixed rotation on every box (a standing pyramid barely spins)" },
-  { "pyramid", "continuous-off", "stage-off", CH_CONTINUOUS_OFF, 0, 0, 0, 0,
-    "continuous collision off (it is on by default)" },
+  { "pyramid", "continuous", "on", CH_CONTINUOUS, 0, 0, 0, 0, "+ continuous collision" },
 };
 #define VARIANT_COUNT ((int) (sizeof variants / sizeof variants[0]))
 
@@ -176,8 +174,8 @@ static carom_status apply (carom_world *w, const variant *v, const bench_scene *
     case CH_SLEEPING:
       st = carom_world_set_sleeping (w, 1);
       break;
-    case CH_CONTINUOUS_OFF:
-      st = carom_world_set_continuous (w, 0);
+    case CH_CONTINUOUS:
+      st = carom_world_set_continuous (w, 1);
       break;
     case CH_FIXED:
       for (i = 0; i < s->count && st == CAROM_OK; ++i)

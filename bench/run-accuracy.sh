@@ -74,9 +74,9 @@ with its debug assertions on).
 * **carom settings**: one knob at a time from the defaults ($DEFAULTS):
   substeps 1, 2, 4, 8; iterations 2, 4, 8, 16, 32; position_correction 0.05, 0.1,
   0.2, 0.4, 0.8; slop 0.001, 0.005, 0.01, 0.02; narrow phase SAT or vertex-edge;
-  continuous collision on (the default) or off;
+  continuous collision off (the default) or on;
   dt 1/30, 1/60, 1/120, 1/240 s. Presets: **fast** (substeps 1, iterations 4),
-  **balanced** (the defaults), **precise** (substeps 4, iterations 8): they are
+  **balanced** (the defaults), **precise** (substeps 4, iterations 8, continuous collision on): they are
   points of this map, not separate modes.
 * **Peers** at their usual settings, dt 1/60: Chipmunk 7 with iterations 10,
   collision slop 0.01, no sleeping; Box2D 2.4 with velocity iterations 8, position
@@ -122,7 +122,7 @@ function label (row,    e, k, v) {
   if (e == "box2d") return "**Box2D 2.4** (usual settings)"
   if (k == "default") return "**balanced** (defaults)"
   if (k == "preset" && v == "fast") return "**fast** (substeps 1, iterations 4)"
-  if (k == "preset" && v == "precise") return "**precise** (substeps 4, iterations 8)"
+  if (k == "preset" && v == "precise") return "**precise** (substeps 4, iterations 8, continuous on)"
   if (k == "reference") return "reference at half resolution (16 substeps)"
   return k " = " v
 }

@@ -367,8 +367,7 @@ typedef enum carom_effect {
   CAROM_EFFECT_FIXED_ROTATION = 1 << 4,  /**< some body is non-rotating */
   CAROM_EFFECT_DAMPING = 1 << 5,         /**< linear or angular damping */
   CAROM_EFFECT_SLEEPING = 1 << 6,        /**< bodies at rest are put to sleep */
-  CAROM_EFFECT_CONTINUOUS = 1 << 7,      /**< fast bodies never tunnel (on by
-                                              default, see below) */
+  CAROM_EFFECT_CONTINUOUS = 1 << 7,      /**< fast bodies never tunnel */
   CAROM_EFFECT_FORCE_32 = 0x7fffffff
 } carom_effect;
 
@@ -421,11 +420,12 @@ CAROM_API carom_status carom_world_set_sleeping (carom_world *world,
  * Continuous collision: contacts are looked for as far ahead as the bodies
  * can travel in the sub-step (speculative contacts), so a fast body cannot
  * pass through a thin wall, and an impact is solved at its time within the
- * step (exact bounce heights, angular momentum). On by default, unlike the
- * other effects, because carom's impact accuracy rests on it; switched off,
- * only pairs within 2% of the smaller body's size ahead are found, which
- * saves pairs in fast, crowded scenes and lets fast bodies tunnel. Bodies
- * marked with carom_body_set_bullet keep it when the world's is off.
+ * step (exact bounce heights, docs/accuracy.md). Off by default, like every
+ * effect: then only pairs within 2% of the smaller body's size ahead are
+ * found, which saves pairs in fast, crowded scenes, and a body that moves
+ * further than that in a step meets others overlapping (a falling box
+ * bounces about 15% too high at dt 1/60) or tunnels through thin walls.
+ * Bodies marked with carom_body_set_bullet have it when the world's is off.
  * Errors: NULL_ARGUMENT.
  */
 CAROM_API carom_status carom_world_set_continuous (carom_world *world,

@@ -80,7 +80,7 @@ typedef struct scene_parser {
   double central[4];         /* x, y, gm, softening */
   double damping[2];
   int sleeping;
-  int continuous;            /* 1 (the default) or 0: `continuous 0` */
+  int continuous;            /* `continuous 1|0`, or -1 when not given */
   uint32_t named_effects;    /* named by `effects`: must end up active */
   int32_t effects_line;
 } scene_parser;
@@ -428,7 +428,7 @@ static carom_status scene_do_central (scene_parser *p)
 static carom_status scene_do_continuous (scene_parser *p)
 {
   if (p->num[0] != 0.0 && p->num[0] != 1.0)
-    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "continuous: 1 (on, the default) or 0 (off), got %g", p->num[0]);
+    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "continuous: 1 (on) or 0 (off, the default), got %g", p->num[0]);
   p->continuous = p->num[0] != 0.0;
   return CAROM_OK;
 }
@@ -444,9 +444,10 @@ static carom_status scene_do_damping (scene_parser *p)
   return CAROM_OK;
 }
 
-/* `effects NAME...`: sleeping, which has no parameter, is switched on by
- * naming it; every other named effect must be made active by the scene's
- * other lines, or the scene is rejected at this line. */
+/* `effects NAME...`: sleeping and continuous, which have no parameter, are
+ * switched on by naming them (unless `continuous 0` says otherwise); every
+ * other named effect must be made active by the scene's other lines, or the
+ * scene is rejected at this line. */
 static carom_status scene_do_effects (scene_parser *p)
 {
   int32_t i;
@@ -479,8 +480,8 @@ static carom_status scene_apply_effects (scene_parser *p)
     s = carom_world_set_damping (p->world, p->damping[0], p->damping[1]);
   if (s == CAROM_OK && p->sleeping)
     s = carom_world_set_sleeping (p->world, 1);
-  if (s == CAROM_OK && !p->continuous)
-    s = carom_world_set_continuous (p->world, 0);
+  if (s == CAROM_OK && (p->continuous == 1 || (p->continuous < 0 && (p->named_effects & CAROM_EFFECT_CONTINUOUS))))
+    s = carom_world_set_continuous (p->world, 1);
   if (s != CAROM_OK)
     return scene_fail (p, s, "an effect was rejected: %s", carom_status_string (s));
   return CAROM_OK;
@@ -755,7 +756,7 @@ static carom_status scene_parser_init (scene_parser *p, const carom_world_def *d
 {
   carom_status s;
   memset (p, 0, sizeof *p);
-  p->continuous = 1;
+  p->continuous = -1;
   s = world_def_import (def, &p->def);
   if (s != CAROM_OK)
     return scene_fail (p, s, "the world def's size field is %lu, this library knows %lu to %lu",

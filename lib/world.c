@@ -49,7 +49,6 @@ carom_status carom_world_init (carom_world **world, const carom_world_def *def)
   w->allocator = def->allocator;
   w->def = *def;
   w->gravity = v2 (def->gravity_x, def->gravity_y);
-  w->continuous = 1;
   bodies_init (w);
   broadphase_init (w);
   contacts_init (w);

@@ -35,7 +35,7 @@ struct carom_world {
   } central;
   double damping_linear, damping_angular;
   int sleeping;
-  int continuous;      /* speculative contacts as far as bodies can travel */
+  int continuous;      /* speculative contacts as far as bodies can travel (off by default) */
 };
 
 #endif

@@ -183,21 +183,27 @@ static void test_equal_masses_head_on_swap_velocities (void **state)
 }
 
 /* Off-centre hits between spinning polygons of different masses: momentum
- * to 1e-12 and, with e = 1, kinetic energy (rotation included) to 1e-9;
- * angular momentum about a fixed point is conserved too. */
+ * to 1e-12 and, with e = 1, kinetic energy (rotation included) to 1e-9.
+ * With continuous collision the impact is met at its time within the step,
+ * never overlapping, and angular momentum about a fixed point is conserved
+ * too; without, the bodies meet overlapping and the overlap is removed by
+ * moving them (split impulses), which keeps energy and linear momentum but
+ * moves the bodies' lever arms about that point. */
 static void test_off_centre_elastic_conserves_energy_and_momentum (void **state)
 {
   int trial;
   (void) state;
-  for (trial = 0; trial < 12; ++trial)
+  for (trial = 0; trial < 24; ++trial)
     {
       carom_world *w = new_world (1.0);
+      int continuous = trial < 12;
       carom_body_def d;
       carom_body_id a, b;
       double e0, e1, px0, py0, l0, px1, py1, l1;
       const double tri[] = {0, 0, 1.2, 0.1, 0.3, 0.9};
       carom_body_def_init (&d, sizeof d);
-      d.x = -2.0, d.y = 0.08 * trial - 0.45, d.vx = 3.0 + 0.1 * trial, d.vy = 0.05, d.spin = 0.7 - 0.1 * trial;
+      assert_status (carom_world_set_continuous (w, continuous), CAROM_OK);
+      d.x = -2.0, d.y = 0.08 * (trial % 12) - 0.45, d.vx = 3.0 + 0.1 * trial, d.vy = 0.05, d.spin = 0.7 - 0.1 * trial;
       d.angle = 0.37 * trial;
       assert_status (carom_world_add_box (w, &d, 1.0, 0.6, &a), CAROM_OK);
       carom_body_def_init (&d, sizeof d);
@@ -214,7 +220,8 @@ static void test_off_centre_elastic_conserves_energy_and_momentum (void **state)
       assert_near_rel (e1, e0, 1e-9);
       assert_near_abs (px1, px0, 1e-12 * (fabs (px0) + fabs (py0) + 1));
       assert_near_abs (py1, py0, 1e-12 * (fabs (px0) + fabs (py0) + 1));
-      assert_near_abs (l1, l0, 1e-12 * (fabs (l0) + 1));
+      if (continuous)
+        assert_near_abs (l1, l0, 1e-12 * (fabs (l0) + 1));
       carom_world_destroy (w);
     }
 }

@@ -285,7 +285,7 @@ class World:
         _check(_lib.carom_world_set_damping(self._handle(), linear, angular), "damping")
 
     def set_continuous(self, enabled):
-        """Continuous collision (on by default): fast bodies never tunnel."""
+        """Continuous collision (off by default): fast bodies never tunnel."""
         _check(_lib.carom_world_set_continuous(self._handle(), 1 if enabled else 0), "continuous")
 
     def set_sleeping(self, enabled):

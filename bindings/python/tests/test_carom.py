@@ -337,9 +337,10 @@ def test_missing_scene_file_raises_io(tmp_path):
 
 def test_effects_switch_on_by_use_and_damping_is_exact():
     with carom.World() as w:
-        assert w.effects == ["continuous"]  # the one effect on by default
+        assert w.effects == []  # every effect is off by default
+        w.set_continuous(True)
+        assert w.effects == ["continuous"]
         w.set_continuous(False)
-        assert w.effects == []
         b = w.add_box(1, 1, vx=2.0)
         w.set_damping(0.5)
         w.gravity = (0, -1)
