@@ -54,10 +54,11 @@ static void hud_energy (char *buf, size_t size, double e)
 
 void hud_draw_status (cairo_t *cr, const hud *h, const hud_status *st, double y, double width)
 {
-  char text[384], energy[32], rate[32], effects[128] = "";
+  char text[3][384], energy[32], rate[32], effects[128] = "";
   uint32_t bit;
-  cairo_text_extents_t ext;
-  double base = y + HUD_STATUS_HEIGHT - 8.0;
+  cairo_text_extents_t ext, help;
+  double base = y + HUD_STATUS_HEIGHT - 8.0, room;
+  int i;
   cairo_save (cr);
   cairo_rectangle (cr, 0, y, width, HUD_STATUS_HEIGHT);
   cairo_set_source_rgb (cr, 0.16, 0.17, 0.19);
@@ -69,28 +70,41 @@ void hud_draw_status (cairo_t *cr, const hud *h, const hud_status *st, double y,
   else
     snprintf (rate, sizeof rate, "%3.0f fps", h->fps);
   /* the effect stages the world runs, by their short names */
-  for (bit = CAROM_EFFECT_CENTRAL_GRAVITY; bit <= CAROM_EFFECT_SLEEPING; bit <<= 1)
+  for (bit = CAROM_EFFECT_CENTRAL_GRAVITY; bit <= CAROM_EFFECT_CONTINUOUS; bit <<= 1)
     if ((st->effects & bit) && bit != CAROM_EFFECT_RESTITUTION)
       {
         strncat (effects, " ", sizeof effects - strlen (effects) - 1);
         strncat (effects, carom_effect_name ((carom_effect) bit), sizeof effects - strlen (effects) - 1);
       }
-  snprintf (text, sizeof text, "%s  %d bodies  %d contacts  %6.2f ms/step  %s  KE %s  e %.2f  g (%.3g, %.3g)%s%s",
+  /* the longest form that fits beside "h: help": a narrow window or many
+   * effects drop the words, then gravity, then the scene's name */
+  snprintf (text[0], sizeof text[0], "%s  %d bodies  %d contacts  %6.2f ms/step  %s  KE %s  e %.2f  g (%.3g, %.3g)%s%s",
             st->scene, st->bodies, st->contacts, h->step_ms, rate, energy, st->restitution, st->gx, st->gy,
             effects, st->holding ? "  holding" : "");
+  snprintf (text[1], sizeof text[1], "%s  %d b  %d c  %.2f ms  %s  KE %s  e %.2f %s%s", st->scene, st->bodies,
+            st->contacts, h->step_ms, rate, energy, st->restitution, effects, st->holding ? "  holding" : "");
+  snprintf (text[2], sizeof text[2], "%d b  %d c  %.2f ms  %s  KE %s %s", st->bodies, st->contacts, h->step_ms,
+            rate, energy, effects);
   hud_font (cr, 12.0, 0);
+  cairo_text_extents (cr, "h: help", &help);
+  room = width - help.x_advance - 32.0;
+  for (i = 0; i < 2; ++i)
+    {
+      cairo_text_extents (cr, text[i], &ext);
+      if (ext.x_advance <= room)
+        break;
+    }
   cairo_set_source_rgb (cr, 0.90, 0.91, 0.88);
   cairo_move_to (cr, 8.0, base);
-  cairo_show_text (cr, text);
+  cairo_show_text (cr, text[i]);
 
-  cairo_text_extents (cr, "h: help", &ext);
-  if (width - ext.x_advance - 8.0 > 8.0)
+  if (width - help.x_advance - 8.0 > 8.0)
     {
-      cairo_rectangle (cr, width - ext.x_advance - 16.0, y, ext.x_advance + 16.0, HUD_STATUS_HEIGHT);
+      cairo_rectangle (cr, width - help.x_advance - 16.0, y, help.x_advance + 16.0, HUD_STATUS_HEIGHT);
       cairo_set_source_rgb (cr, 0.16, 0.17, 0.19);
       cairo_fill (cr);
       cairo_set_source_rgb (cr, 0.62, 0.64, 0.60);
-      cairo_move_to (cr, width - ext.x_advance - 8.0, base);
+      cairo_move_to (cr, width - help.x_advance - 8.0, base);
       cairo_show_text (cr, "h: help");
     }
   cairo_restore (cr);
