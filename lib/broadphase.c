@@ -105,8 +105,9 @@ static int widest_axis (const carom_world *world)
 int broadphase_update (carom_world *world, pair_callback fn, void *user)
 {
   broadphase *bp = &world->broad;
-  int32_t i, j, n;
+  int32_t i, n;
   int axis = widest_axis (world);
+  double accel = v2_len (world->gravity);
   if (axis != bp->axis)
     {
       /* switch only for a clear difference, so the order stays coherent */
@@ -124,7 +125,7 @@ int broadphase_update (carom_world *world, pair_callback fn, void *user)
         if (world->bodies[i].alive)
           {
             bp->entries[n].slot = i;
-            fill_entry (&bp->entries[n], &world->bodies[i], bp->axis, world->def.slop, world->step_h, v2_len (world->gravity),
+            fill_entry (&bp->entries[n], &world->bodies[i], bp->axis, world->def.slop, world->step_h, accel,
                         world->continuous);
             n++;
           }
@@ -136,21 +137,23 @@ int broadphase_update (carom_world *world, pair_callback fn, void *user)
     {
       n = bp->count;
       for (i = 0; i < n; ++i)
-        fill_entry (&bp->entries[i], &world->bodies[bp->entries[i].slot], bp->axis, world->def.slop, world->step_h, v2_len (world->gravity),
-                        world->continuous);
+        fill_entry (&bp->entries[i], &world->bodies[bp->entries[i].slot], bp->axis, world->def.slop, world->step_h, accel,
+                    world->continuous);
       if (!insertion_sort (bp->entries, n))
         merge_sort (bp->entries, bp->scratch, n);
     }
 
   for (i = 0; i < n; ++i)
     {
-      const sweep_entry *e = &bp->entries[i];
-      for (j = i + 1; j < n && bp->entries[j].lo <= e->hi; ++j)
+      /* a copy, and a pointer walk: the compiler cannot tell that fn leaves
+       * the entries alone, and this loop runs for every nearby pair */
+      const sweep_entry e = bp->entries[i];
+      const sweep_entry *f, *end = bp->entries + n;
+      for (f = &bp->entries[i + 1]; f < end && f->lo <= e.hi; ++f)
         {
-          const sweep_entry *f = &bp->entries[j];
-          if (f->lo2 > e->hi2 || f->hi2 < e->lo2 || (e->is_static && f->is_static))
+          if (f->lo2 > e.hi2 || f->hi2 < e.lo2 || (e.is_static && f->is_static))
             continue;
-          fn (world, e->slot, f->slot, user);
+          fn (world, e.slot, f->slot, user);
         }
     }
   return 1;

@@ -30,6 +30,7 @@ typedef struct contact {
   int32_t first_point;        /* index of points[0] among all points */
   int32_t block;              /* two points solved as one 2x2 problem */
   int32_t deferred;           /* bouncy, apart, not meeting: sits out */
+  int32_t overlapping;        /* some point has a position bias */
   double k11, k12, k22, det;  /* its matrix, set by the solver's prepare */
   int32_t count;
   contact_point points[MANIFOLD_MAX_POINTS];

@@ -188,6 +188,7 @@ static void prepare (carom_world *world, double h)
       double vn[MANIFOLD_MAX_POINTS], dg[MANIFOLD_MAX_POINTS] = { 0.0 }, old_nm[MANIFOLD_MAX_POINTS], old_tm[MANIFOLD_MAX_POINTS];
       int impact = 0;
       ba->touching = bb->touching = 1;
+      k->overlapping = 0;
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
@@ -201,6 +202,7 @@ static void prepare (carom_world *world, double h)
           if (reaches (k, p, vn[j], threshold, h))
             impact = 1;
           p->bias = p->depth > k->slop ? beta * (p->depth - k->slop) / h : 0.0;
+          k->overlapping |= p->bias != 0.0;
           p->pseudo_impulse = 0.0;
           p->toi = 0.0;
           if (k->friction == 0.0)
@@ -400,10 +402,16 @@ static void solve_velocities (carom_world *world)
             /* Coulomb: the tangent impulse stays within mu times the normal
              * impulse */
             contact_point *p = &k->points[j];
-            vec2 t = v2_perp (p->normal);
-            double vt = relative_speed (a, b, t, p->rt_a, p->rt_b);
-            double limit = k->friction * p->normal_impulse;
-            double acc = p->tangent_impulse - p->tangent_mass * vt;
+            vec2 t;
+            double vt, limit, acc;
+            /* no normal impulse (a third of rain's points): the limit is 0,
+             * so a tangent impulse of 0 stays 0 */
+            if (p->normal_impulse == 0.0 && p->tangent_impulse == 0.0)
+              continue;
+            t = v2_perp (p->normal);
+            vt = relative_speed (a, b, t, p->rt_a, p->rt_b);
+            limit = k->friction * p->normal_impulse;
+            acc = p->tangent_impulse - p->tangent_mass * vt;
             acc = acc > limit ? limit : (acc < -limit ? -limit : acc);
             push (a, b, t, p->rt_a, p->rt_b, acc - p->tangent_impulse);
             p->tangent_impulse = acc;
@@ -432,11 +440,14 @@ static void solve_positions (carom_world *world)
     {
       contact *k = &c->list[i];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
+      if (!k->overlapping)
+        continue;
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
           double vn, acc;
-          if (p->bias == 0.0 && p->pseudo_impulse == 0.0)
+          /* pseudo_impulse starts at 0, so a point without bias never acts */
+          if (p->bias == 0.0)
             continue;
           vn = v2_dot (v2_sub (b->pv, a->pv), p->normal) + b->pw * p->rn_b - a->pw * p->rn_a;
           acc = p->pseudo_impulse - p->normal_mass * (vn - p->bias);
