@@ -76,6 +76,9 @@ controls_result controls_key (demo *d, unsigned keyval)
     case GDK_KEY_o: case GDK_KEY_O:
       demo_toggle_effect (d, CAROM_EFFECT_CENTRAL_GRAVITY);
       break;
+    case GDK_KEY_t: case GDK_KEY_T:
+      demo_toggle_effect (d, CAROM_EFFECT_CONTINUOUS);
+      break;
     case GDK_KEY_r: case GDK_KEY_R:
       return demo_restart (d) ? CONTROLS_SCENE : CONTROLS_HANDLED;
     case GDK_KEY_h: case GDK_KEY_H: case GDK_KEY_question: case GDK_KEY_F1:

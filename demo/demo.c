@@ -257,6 +257,9 @@ void demo_toggle_effect (demo *d, carom_effect effect)
     case CAROM_EFFECT_SLEEPING:
       carom_world_set_sleeping (w, !on);
       break;
+    case CAROM_EFFECT_CONTINUOUS:
+      carom_world_set_continuous (w, !on);
+      break;
     case CAROM_EFFECT_CENTRAL_GRAVITY:
       {
         /* a pull towards the view's centre strong enough to orbit in a few

@@ -124,6 +124,7 @@ static const char *const hud_help_lines[][2] = {
   { "d", "damping on / off" },
   { "o", "central gravity (orbit the view's centre)" },
   { "s", "sleeping on / off" },
+  { "t", "continuous collision on / off (no tunnelling)" },
   { "h", "this help" },
   { "q Esc", "quit" },
   { "mouse", "drag a body, release to throw" },

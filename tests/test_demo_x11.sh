@@ -200,7 +200,7 @@ fi
 
 # Every key, twice over, including scene switches: the demo must survive.
 key 2 3 4 5 1 Up Up Left Right Down g g plus plus minus Page_Up Page_Down c c r v h h \
-  space period period space KP_Add KP_Subtract equal question
+  space period period space KP_Add KP_Subtract equal question f d o s t f d o s t
 key Home F5 x 0 9 BackSpace Tab Return
 sleep 0.5
 if alive; then pass "every key is survived"
