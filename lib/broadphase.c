@@ -1,5 +1,6 @@
 #include "broadphase.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "world.h"
@@ -15,6 +16,9 @@ void broadphase_destroy (carom_world *world)
   broadphase *bp = &world->broad;
   mem_free (&world->allocator, bp->entries, (size_t) bp->cap * sizeof (sweep_entry));
   mem_free (&world->allocator, bp->scratch, (size_t) bp->scratch_cap * sizeof (sweep_entry));
+  mem_free (&world->allocator, bp->cell_start, (size_t) bp->cell_cap * sizeof (int32_t));
+  mem_free (&world->allocator, bp->cell_items, (size_t) bp->items_cap * sizeof (int32_t));
+  mem_free (&world->allocator, bp->cell_fill, (size_t) bp->fill_cap * sizeof (int32_t));
   memset (bp, 0, sizeof *bp);
 }
 
@@ -102,7 +106,31 @@ static int widest_axis (const carom_world *world)
   return syy - sy * sy / n > 1.5 * (sxx - sx * sx / n) ? 1 : 0;
 }
 
-int broadphase_update (carom_world *world, pair_callback fn, void *user)
+/* Fill one entry per live body, in slot order (the grid needs no order). */
+static int32_t fill_all (carom_world *world, double accel)
+{
+  broadphase *bp = &world->broad;
+  int32_t i, n = 0;
+  for (i = 0; i < world->slot_count; ++i)
+    if (world->bodies[i].alive)
+      {
+        bp->entries[n].slot = i;
+        fill_entry (&bp->entries[n], &world->bodies[i], bp->axis, world->def.slop, world->step_h, accel,
+                    world->continuous);
+        n++;
+      }
+  return n;
+}
+
+static int reserve_entries (carom_world *world)
+{
+  broadphase *bp = &world->broad;
+  return mem_reserve (&world->allocator, (void **) &bp->entries, &bp->cap, world->live_count, sizeof (sweep_entry))
+         && mem_reserve (&world->allocator, (void **) &bp->scratch, &bp->scratch_cap, world->live_count,
+                         sizeof (sweep_entry));
+}
+
+int broadphase_sweep (carom_world *world, pair_callback fn, void *user)
 {
   broadphase *bp = &world->broad;
   int32_t i, n;
@@ -114,22 +142,11 @@ int broadphase_update (carom_world *world, pair_callback fn, void *user)
       bp->axis = axis;
       bp->dirty = 1;
     }
-  if (!mem_reserve (&world->allocator, (void **) &bp->entries, &bp->cap, world->live_count, sizeof (sweep_entry))
-      || !mem_reserve (&world->allocator, (void **) &bp->scratch, &bp->scratch_cap, world->live_count,
-                       sizeof (sweep_entry)))
+  if (!reserve_entries (world))
     return 0;
   if (bp->dirty)
     {
-      n = 0;
-      for (i = 0; i < world->slot_count; ++i)
-        if (world->bodies[i].alive)
-          {
-            bp->entries[n].slot = i;
-            fill_entry (&bp->entries[n], &world->bodies[i], bp->axis, world->def.slop, world->step_h, accel,
-                        world->continuous);
-            n++;
-          }
-      bp->count = n;
+      n = bp->count = fill_all (world, accel);
       merge_sort (bp->entries, bp->scratch, n);
       bp->dirty = 0;
     }
@@ -157,4 +174,124 @@ int broadphase_update (carom_world *world, pair_callback fn, void *user)
         }
     }
   return 1;
+}
+
+/* ---------------------------------------------------------------- grid
+ *
+ * A sweep along one axis tests every body against the whole strip of the
+ * world that overlaps it on that axis: about sqrt(n) others in a crowded
+ * square world, so its cost grows as n sqrt(n). From GRID_MIN_BODIES on, the
+ * boxes go into a uniform grid instead, cells about the size of a typical
+ * body (at most 4 cells per body), each box into every cell it covers, and
+ * each cell's boxes are tested against each other: about constant work per
+ * body. A pair that shares several cells is reported from one only, the
+ * cell of the corner (max of the two lows, on both axes), which both cover. */
+
+/* The cell index of coordinate x along an axis of `count` cells. */
+static int32_t grid_cell (double x, double origin, double size, int32_t count)
+{
+  double c = floor ((x - origin) / size);
+  return c < 0.0 ? 0 : c >= (double) count ? count - 1 : (int32_t) c;
+}
+
+int broadphase_grid (carom_world *world, pair_callback fn, void *user)
+{
+  broadphase *bp = &world->broad;
+  const sweep_entry *e;
+  double accel = v2_len (world->gravity), u0, u1, v0, v1, size = 0.0, limit;
+  int32_t n, i, j, k, nu, nv, cells, total, moving = 0;
+  if (!reserve_entries (world))
+    return 0;
+  n = fill_all (world, accel);
+  bp->dirty = 1; /* the sweep, if it runs again, starts afresh */
+  e = bp->entries;
+  if (n == 0)
+    return 1;
+  u0 = e[0].lo, u1 = e[0].hi, v0 = e[0].lo2, v1 = e[0].hi2;
+  for (i = 0; i < n; ++i)
+    {
+      u0 = fmin (u0, e[i].lo), u1 = fmax (u1, e[i].hi);
+      v0 = fmin (v0, e[i].lo2), v1 = fmax (v1, e[i].hi2);
+      if (!e[i].is_static)
+        size += fmax (e[i].hi - e[i].lo, e[i].hi2 - e[i].lo2), moving++;
+    }
+  if (moving == 0)
+    return 1; /* static pairs are never reported */
+  /* cells of the mean moving box, but no more than 4 per body */
+  size /= moving;
+  limit = 4.0 * n + 16.0;
+  if (!(size > 0.0))
+    size = fmax (u1 - u0, v1 - v0) + 1.0;
+  /* and no more than 8 cell places per body in all (walls cover many) */
+  for (;;)
+    {
+      double places = 0.0;
+      while ((floor ((u1 - u0) / size) + 1.0) * (floor ((v1 - v0) / size) + 1.0) > limit)
+        size *= 2.0;
+      nu = (int32_t) floor ((u1 - u0) / size) + 1;
+      nv = (int32_t) floor ((v1 - v0) / size) + 1;
+      for (i = 0; i < n; ++i)
+        places += (double) (grid_cell (e[i].hi, u0, size, nu) - grid_cell (e[i].lo, u0, size, nu) + 1)
+                  * (grid_cell (e[i].hi2, v0, size, nv) - grid_cell (e[i].lo2, v0, size, nv) + 1);
+      if (places <= 2.0 * limit)
+        {
+          total = (int32_t) places;
+          break;
+        }
+      size *= 2.0;
+    }
+  cells = nu * nv;
+
+  /* count each cell's boxes, then place the boxes (in slot order) */
+  if (!mem_reserve (&world->allocator, (void **) &bp->cell_start, &bp->cell_cap, cells + 1, sizeof (int32_t)))
+    return 0;
+  memset (bp->cell_start, 0, (size_t) (cells + 1) * sizeof (int32_t));
+  for (i = 0; i < n; ++i)
+    {
+      int32_t a0 = grid_cell (e[i].lo, u0, size, nu), a1 = grid_cell (e[i].hi, u0, size, nu);
+      int32_t b0 = grid_cell (e[i].lo2, v0, size, nv), b1 = grid_cell (e[i].hi2, v0, size, nv), a, b;
+      for (b = b0; b <= b1; ++b)
+        for (a = a0; a <= a1; ++a)
+          bp->cell_start[b * nu + a + 1]++;
+    }
+  if (!mem_reserve (&world->allocator, (void **) &bp->cell_items, &bp->items_cap, total, sizeof (int32_t))
+      || !mem_reserve (&world->allocator, (void **) &bp->cell_fill, &bp->fill_cap, cells, sizeof (int32_t)))
+    return 0;
+  for (k = 0; k < cells; ++k)
+    bp->cell_start[k + 1] += bp->cell_start[k];
+  memcpy (bp->cell_fill, bp->cell_start, (size_t) cells * sizeof (int32_t));
+  for (i = 0; i < n; ++i)
+    {
+      int32_t a0 = grid_cell (e[i].lo, u0, size, nu), a1 = grid_cell (e[i].hi, u0, size, nu);
+      int32_t b0 = grid_cell (e[i].lo2, v0, size, nv), b1 = grid_cell (e[i].hi2, v0, size, nv), a, b;
+      for (b = b0; b <= b1; ++b)
+        for (a = a0; a <= a1; ++a)
+          bp->cell_items[bp->cell_fill[b * nu + a]++] = i;
+    }
+
+  for (k = 0; k < cells; ++k)
+    {
+      int32_t first = bp->cell_start[k], last = bp->cell_start[k + 1];
+      for (i = first; i < last; ++i)
+        {
+          const sweep_entry *p = &e[bp->cell_items[i]];
+          for (j = i + 1; j < last; ++j)
+            {
+              const sweep_entry *q = &e[bp->cell_items[j]];
+              if (q->lo > p->hi || q->hi < p->lo || q->lo2 > p->hi2 || q->hi2 < p->lo2 || (p->is_static && q->is_static))
+                continue;
+              /* reported by the cell of the overlap's low corner only */
+              if (grid_cell (fmax (p->lo, q->lo), u0, size, nu) + nu * grid_cell (fmax (p->lo2, q->lo2), v0, size, nv)
+                  != k)
+                continue;
+              fn (world, p->slot, q->slot, user);
+            }
+        }
+    }
+  return 1;
+}
+
+int broadphase_update (carom_world *world, pair_callback fn, void *user)
+{
+  return world->live_count >= GRID_MIN_BODIES ? broadphase_grid (world, fn, user) : broadphase_sweep (world, fn, user);
 }

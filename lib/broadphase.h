@@ -1,8 +1,10 @@
 /* Broad phase: sort and sweep over bounding boxes along the axis where the
  * bodies spread most. Bodies move little between steps, so the sorted order is
  * repaired by insertion sort in about O(n); a full merge sort, O(n log n),
- * runs when bodies are added or the order is badly shuffled. Pairs whose
- * boxes overlap go to a plain callback, as the original c_index did. */
+ * runs when bodies are added or the order is badly shuffled. From
+ * GRID_MIN_BODIES bodies on, a uniform grid replaces the sweep, whose cost
+ * grows as n sqrt(n) in crowded worlds. Pairs whose boxes overlap go to a
+ * plain callback, as the original c_index did. */
 #ifndef CAROM_BROADPHASE_H
 #define CAROM_BROADPHASE_H
 
@@ -17,9 +19,14 @@ typedef struct sweep_entry {
   int32_t is_static;
 } sweep_entry;
 
+/* Worlds of this many live bodies use the grid. */
+#define GRID_MIN_BODIES 4096
+
 typedef struct broadphase {
   sweep_entry *entries, *scratch;
   int32_t count, cap, scratch_cap;
+  int32_t *cell_start, *cell_items, *cell_fill; /* the grid's cells */
+  int32_t cell_cap, items_cap, fill_cap;
   int axis;          /* 0: sweep along x, 1: along y */
   int dirty;         /* bodies were added or removed: rebuild */
 } broadphase;
@@ -31,5 +38,10 @@ void broadphase_destroy (struct carom_world *world);
 /* Sort, then report each overlapping pair once (never two static bodies).
  * Returns 0 when memory ran out (nothing reported), 1 otherwise. */
 int broadphase_update (struct carom_world *world, pair_callback fn, void *user);
+
+/* The two methods broadphase_update chooses between, each reporting the
+ * same set of pairs (in its own order). */
+int broadphase_sweep (struct carom_world *world, pair_callback fn, void *user);
+int broadphase_grid (struct carom_world *world, pair_callback fn, void *user);
 
 #endif

@@ -1,0 +1,166 @@
+/* The broad phase's two methods, the sweep (worlds below GRID_MIN_BODIES
+ * bodies) and the grid (from there on), report exactly the same pairs, each
+ * once, whatever the scene: crowded mixed sizes with long walls, bodies on a
+ * line, worlds spread over 1e89, one box covering all, statics only. */
+#include "support.h"
+
+#include <stdlib.h>
+
+#include "broadphase.h"
+#include "world.h"
+
+typedef struct pair_list {
+  int64_t *keys;
+  int32_t count, cap;
+} pair_list;
+
+static void collect (carom_world *world, int32_t a, int32_t b, void *user)
+{
+  pair_list *l = user;
+  (void) world;
+  if (l->count == l->cap)
+    {
+      l->cap = l->cap ? 2 * l->cap : 1024;
+      l->keys = realloc (l->keys, (size_t) l->cap * sizeof *l->keys);
+      assert_non_null (l->keys);
+    }
+  l->keys[l->count++] = a < b ? (int64_t) a << 32 | b : (int64_t) b << 32 | a;
+}
+
+static int compare_keys (const void *x, const void *y)
+{
+  int64_t a = *(const int64_t *) x, b = *(const int64_t *) y;
+  return a < b ? -1 : a > b;
+}
+
+/* Both methods on the same world: the same sorted pairs, none twice.
+ * Returns the number of pairs. */
+static int32_t same_pairs (carom_world *w)
+{
+  pair_list sweep = { NULL, 0, 0 }, grid = { NULL, 0, 0 };
+  int32_t i, count;
+  assert_int_equal (broadphase_sweep (w, collect, &sweep), 1);
+  assert_int_equal (broadphase_grid (w, collect, &grid), 1);
+  qsort (sweep.keys, (size_t) sweep.count, sizeof *sweep.keys, compare_keys);
+  qsort (grid.keys, (size_t) grid.count, sizeof *grid.keys, compare_keys);
+  assert_int_equal (sweep.count, grid.count);
+  for (i = 0; i < grid.count; ++i)
+    {
+      assert_true (sweep.keys[i] == grid.keys[i]);
+      if (i > 0)
+        assert_true (grid.keys[i] != grid.keys[i - 1]);
+    }
+  count = grid.count;
+  free (sweep.keys);
+  free (grid.keys);
+  return count;
+}
+
+/* A small deterministic generator, so the scene is the same everywhere. */
+static double next_unit (uint32_t *state)
+{
+  *state = *state * 1664525u + 1013904223u;
+  return (double) (*state >> 8) / 16777216.0;
+}
+
+static void add_body (carom_world *w, carom_body_type type, double x, double y, double size, int kind)
+{
+  carom_body_def d;
+  assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+  d.type = type, d.x = x, d.y = y, d.angle = x * 0.1;
+  switch (kind % 3)
+    {
+    case 0: assert_status (carom_world_add_circle (w, &d, 0.5 * size, NULL), CAROM_OK); break;
+    case 1: assert_status (carom_world_add_box (w, &d, size, 0.6 * size, NULL), CAROM_OK); break;
+    default: assert_status (carom_world_add_regular (w, &d, 5, 0.6 * size, NULL), CAROM_OK); break;
+    }
+}
+
+static carom_world *new_world (void)
+{
+  carom_world *w = NULL;
+  assert_status (carom_world_init (&w, NULL), CAROM_OK);
+  return w;
+}
+
+static void test_crowded_mixed_sizes_with_walls (void **state)
+{
+  carom_world *w = new_world ();
+  uint32_t seed = 12345;
+  int32_t i, pairs;
+  (void) state;
+  /* walls around a 150 x 150 field, a few large statics inside */
+  {
+    carom_body_def d;
+    assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+    d.type = CAROM_STATIC;
+    d.x = 75, d.y = -1;
+    assert_status (carom_world_add_box (w, &d, 152, 2, NULL), CAROM_OK);
+    d.x = 75, d.y = 151;
+    assert_status (carom_world_add_box (w, &d, 152, 2, NULL), CAROM_OK);
+    d.x = -1, d.y = 75;
+    assert_status (carom_world_add_box (w, &d, 2, 152, NULL), CAROM_OK);
+    d.x = 151, d.y = 75;
+    assert_status (carom_world_add_box (w, &d, 2, 152, NULL), CAROM_OK);
+  }
+  for (i = 0; i < 20; ++i)
+    add_body (w, CAROM_STATIC, 150 * next_unit (&seed), 150 * next_unit (&seed), 2 + 8 * next_unit (&seed), i);
+  for (i = 0; i < 5000; ++i)
+    add_body (w, CAROM_DYNAMIC, 150 * next_unit (&seed), 150 * next_unit (&seed), 0.2 + 2.8 * next_unit (&seed), i);
+  assert_true (carom_world_body_count (w) >= GRID_MIN_BODIES);
+  pairs = same_pairs (w);
+  print_message ("crowded: %d bodies, %d pairs\n", (int) carom_world_body_count (w), (int) pairs);
+  assert_true (pairs > 5000);
+  /* and after some steps, with bodies moved and the grid in charge */
+  for (i = 0; i < 5; ++i)
+    assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
+  assert_true (same_pairs (w) > 5000);
+  carom_world_destroy (w);
+}
+
+static void test_degenerate_layouts (void **state)
+{
+  carom_world *w;
+  int32_t i;
+  (void) state;
+  /* bodies on a line a million apart, and a touching cluster */
+  w = new_world ();
+  for (i = 0; i < 300; ++i)
+    add_body (w, CAROM_DYNAMIC, 1e6 * i, 0, 1, i);
+  for (i = 0; i < 300; ++i)
+    add_body (w, CAROM_DYNAMIC, 0.5 * (i % 20), 0.5 * (i / 20), 1, i);
+  assert_true (same_pairs (w) > 300);
+  carom_world_destroy (w);
+  /* spread over 1e89, far apart */
+  w = new_world ();
+  for (i = 0; i < 200; ++i)
+    add_body (w, CAROM_DYNAMIC, 1e88 * (i % 14), 1e88 * (i / 14), 1 + i, i);
+  assert_int_equal (same_pairs (w), 0);
+  carom_world_destroy (w);
+  /* spread over 1e51, and one static box covering them all */
+  w = new_world ();
+  for (i = 0; i < 200; ++i)
+    add_body (w, CAROM_DYNAMIC, 1e50 * (i % 14), 1e50 * (i / 14), 1 + i, i);
+  add_body (w, CAROM_STATIC, 6e50, 6e50, 1e53, 1);
+  assert_int_equal (same_pairs (w), 200);
+  carom_world_destroy (w);
+  /* statics only: nothing to report; one body: nothing either */
+  w = new_world ();
+  for (i = 0; i < 50; ++i)
+    add_body (w, CAROM_STATIC, 0.5 * i, 0, 1, i);
+  assert_int_equal (same_pairs (w), 0);
+  carom_world_destroy (w);
+  w = new_world ();
+  add_body (w, CAROM_DYNAMIC, 0, 0, 1, 0);
+  assert_int_equal (same_pairs (w), 0);
+  carom_world_destroy (w);
+}
+
+int main (void)
+{
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test (test_crowded_mixed_sizes_with_walls),
+    cmocka_unit_test (test_degenerate_layouts),
+  };
+  return cmocka_run_group_tests (tests, NULL, NULL);
+}
