@@ -383,27 +383,37 @@ EOF
 The targets were Box2D v3 (not packaged for Debian 12, so not in this run)
 at 0.15 ms for the pyramid, 1.3 ms for the rain and 0.29 ms for the gas, and
 Chipmunk 7 at 0.39 / 3.6 / 0.16 ms, measured by others on this machine.
-carom beats every measured engine on the gas, the scene where it is also
-the one that keeps its energy (docs/accuracy.md). It is behind on stacked
-and piled scenes, for reasons the profile above shows:
+Against the engines measured in this run, carom is fastest on the gas (where
+it is also the one that keeps its energy, docs/accuracy.md) and on the rain,
+and level with Chipmunk on the pyramid (within a few percent either way from
+run to run on this shared machine: compare the rounds). Against Box2D v3's
+figures it is behind on the pyramid (about 2x) and the rain (about 3x), for
+reasons the profile above shows:
 
-- **The solver is most of the time (55-65%).** carom runs 8 velocity passes
-  and 8 position passes per step in double precision, one contact point at
-  a time; Box2D v3 uses float, SIMD over four or eight contacts, graph
-  colouring and soft sub-steps with one pass each. Planned: a contact
-  constraint array separate from the manifolds (solver data contiguous),
-  fewer position passes where the overlap is already within the slop, and,
-  only with measurements showing it pays, SIMD over contacts in double.
-- **The narrow phase is a quarter of the rest.** SAT tests every edge of both
-  pieces; pairs that touched last step could start from last step's
-  separating edge (most keep it) and reuse the manifold when the bodies
-  barely moved.
-- **The broad phase grows faster than n log n at 100k bodies** (the scaling
-  tables): one sorted axis makes each body test a whole strip. A uniform
-  grid, or a dynamic box tree as Box2D has, is the planned replacement.
+- **The solver is most of the time (50-60%).** carom runs 8 velocity passes
+  per step in double precision, one contact point at a time, plus position
+  passes over the contacts that overlap beyond the slop; Box2D v3 uses float,
+  SIMD over four or eight contacts, graph colouring and soft sub-steps with
+  one pass each. The passes are already near the fewest instructions that
+  give the same answer (each point's update is some 20 instructions per
+  impulse); what is left is the data layout (a contact constraint array
+  separate from the manifolds, so the passes stream through memory) and SIMD
+  over contacts of different bodies in double, which needs the colouring.
+  Both are planned, in that order, each only with measurements showing it
+  pays.
+- **The narrow phase is a third.** SAT tests every edge of both pieces every
+  step. Pairs that barely moved relative to each other could keep last
+  step's manifold (moved with the bodies); that trades a bounded error for
+  time, so it would be a knob, measured in docs/accuracy.md like the others.
+- **The broad phase** is a sort and sweep below 4096 bodies and a uniform
+  grid above (the sweep's strip tests grow as n sqrt(n) in crowded worlds:
+  the gas at 100k bodies went from 65 to 42 ms per step with the grid, one
+  run of `bench_carom scene=gas bodies=100000 steps=60` each). What
+  remains of the growth per body in the scaling table is memory: at 100k
+  bodies the world no longer fits in the caches.
 - **Sleeping is off in these runs** for every engine; with it on (the
-  `sleep on` rows and docs/effects.md) a settled pyramid costs carom 9% of
-  its awake time.
+  `sleep on` rows and docs/effects.md) a settled pyramid costs carom under a
+  tenth of its awake time.
 EOF
 } >"$OUT.tmp"
 mv "$OUT.tmp" "$OUT"
