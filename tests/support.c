@@ -72,9 +72,12 @@ void world_momentum (const carom_world *world, double *px, double *py, double *l
 
 uint64_t world_state_hash (const carom_world *world)
 {
-  carom_body_id ids[512];
-  int32_t n = carom_world_get_bodies (world, ids, 512), i;
+  int32_t count = carom_world_body_count (world);
+  carom_body_id *ids = malloc ((size_t) (count > 0 ? count : 1) * sizeof *ids);
+  int32_t n, i;
   uint64_t h = 1469598103934665603ull;
+  assert_non_null (ids);
+  n = carom_world_get_bodies (world, ids, count);
   for (i = 0; i < n; ++i)
     {
       double s[6];
@@ -87,5 +90,6 @@ uint64_t world_state_hash (const carom_world *world)
       for (k = 0; k < sizeof s; ++k)
         h = (h ^ bytes[k]) * 1099511628211ull;
     }
+  free (ids);
   return h;
 }

@@ -594,6 +594,60 @@ static void test_rain_update_out_of_memory_with_substeps (void **state)
   assert_true (ooms > 0);
 }
 
+/* The grid broad phase (worlds of GRID_MIN_BODIES bodies and more): each
+ * allocation the first update makes fails once, in a world of 4100 bodies
+ * falling onto a floor; the update reports OUT_OF_MEMORY and leaves every
+ * body bit for bit as it was, then succeeds. */
+static void test_grid_update_out_of_memory (void **state)
+{
+  checking_alloc c;
+  carom_world_def def;
+  carom_body_def d;
+  long k, setup_calls;
+  int i, ooms = 0;
+  (void) state;
+  use_allocator (&def, &c);
+  def.gravity_y = -10.0;
+  for (k = 1;; ++k)
+    {
+      carom_world *w = NULL;
+      uint64_t before;
+      carom_status s;
+      checking_reset (&c, 0, FAIL_ONCE);
+      assert_status (carom_world_init (&w, &def), CAROM_OK);
+      assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+      d.type = CAROM_STATIC, d.x = 50.0, d.y = -0.5;
+      assert_status (carom_world_add_box (w, &d, 110.0, 1.0, NULL), CAROM_OK);
+      assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+      for (i = 0; i < 4100; ++i)
+        {
+          d.x = (i % 100) * 1.0, d.y = 0.45 + (i / 100) * 0.95;
+          assert_status (carom_world_add_circle (w, &d, 0.45, NULL), CAROM_OK);
+        }
+      before = world_state_hash (w);
+      setup_calls = c.calls;
+      c.fail_at = setup_calls + k;
+      s = carom_world_update (w, 1.0 / 60.0);
+      if (c.failures == 0)
+        {
+          assert_status (s, CAROM_OK);
+          assert_true (carom_world_contact_count (w) >= 100); /* the bottom row on the floor */
+          carom_world_destroy (w);
+          break;
+        }
+      assert_status (s, CAROM_ERR_OUT_OF_MEMORY);
+      assert_true (world_state_hash (w) == before);
+      ooms++;
+      assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
+      assert_true (world_state_hash (w) != before);
+      carom_world_destroy (w);
+      assert_int_equal (c.live_blocks, 0);
+      assert_int_equal (c.bad_frees, 0);
+    }
+  assert_int_equal (ooms, k - 1);
+  assert_true (ooms >= 3); /* the grid's three arrays at least */
+}
+
 /* Out of memory for good from the k-th allocation: the failing call reports
  * it and destroy still frees everything. */
 static void test_fail_every_allocation_from_k (void **state)
@@ -712,6 +766,7 @@ int main (void)
     cmocka_unit_test (test_fail_each_allocation_once_vertex_edge),
     cmocka_unit_test (test_fail_each_allocation_once_substeps),
     cmocka_unit_test (test_rain_update_out_of_memory_with_substeps),
+    cmocka_unit_test (test_grid_update_out_of_memory),
     cmocka_unit_test (test_fail_every_allocation_from_k),
     cmocka_unit_test (test_scene_text_out_of_memory),
     cmocka_unit_test (test_scene_file_out_of_memory),
