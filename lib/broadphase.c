@@ -191,7 +191,7 @@ int broadphase_sweep (carom_world *world, pair_callback fn, void *user)
 static int32_t grid_cell (double x, double origin, double size, int32_t count)
 {
   double c = floor ((x - origin) / size);
-  return c < 0.0 ? 0 : c >= (double) count ? count - 1 : (int32_t) c;
+  return !(c >= 0.0) ? 0 : c >= (double) count ? count - 1 : (int32_t) c;
 }
 
 int broadphase_grid (carom_world *world, pair_callback fn, void *user)
@@ -217,6 +217,10 @@ int broadphase_grid (carom_world *world, pair_callback fn, void *user)
     }
   if (moving == 0)
     return 1; /* static pairs are never reported */
+  /* boxes reaching past the doubles (a body of 1e100 moving at 1e100 for
+   * 8 s): no grid spans them, and the sweep needs no cells */
+  if (!(isfinite (u1 - u0) && isfinite (v1 - v0) && isfinite (size)))
+    return broadphase_sweep (world, fn, user);
   /* cells of the mean moving box, but no more than 4 per body */
   size /= moving;
   limit = 4.0 * n + 16.0;

@@ -23,7 +23,10 @@ SAN_ENV     := ASAN_OPTIONS=detect_leaks=1:allow_user_segv_handler=0:detect_stac
                UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
 FUZZ_CC      ?= clang
-FUZZ_FLAGS   := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g -O1
+# GRID_MIN_BODIES=8: fuzzed worlds of 8 bodies or more use the grid broad
+# phase, smaller ones the sweep
+FUZZ_FLAGS   := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g -O1 \
+                -DGRID_MIN_BODIES=8
 FUZZ_DIR     := $(BUILD)/fuzz
 FUZZ_LIB_OBJ := $(LIB_SRC:lib/%.c=$(FUZZ_DIR)/lib/%.o)
 FUZZ_TARGETS := scene polygon world

@@ -1,7 +1,8 @@
 /* The broad phase's two methods, the sweep (worlds below GRID_MIN_BODIES
  * bodies) and the grid (from there on), report exactly the same pairs, each
  * once, whatever the scene: crowded mixed sizes with long walls, bodies on a
- * line, worlds spread over 1e89, one box covering all, statics only. */
+ * line, worlds spread over 1e89, one box covering all, boxes reaching past
+ * the doubles, statics only. */
 #include "support.h"
 
 #include <stdlib.h>
@@ -146,6 +147,23 @@ static void test_degenerate_layouts (void **state)
     add_body (w, CAROM_DYNAMIC, 1e50 * (i % 14), 1e50 * (i / 14), 1 + i, i);
   add_body (w, CAROM_STATIC, 6e50, 6e50, 1e53, 1);
   assert_int_equal (same_pairs (w), 200);
+  carom_world_destroy (w);
+  /* boxes reaching past the doubles (bodies at 1e100 m/s looked ahead over
+   * a sub-step of 1e300 s, with continuous collision): no grid spans them,
+   * the same pairs still come out */
+  w = new_world ();
+  assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
+  for (i = 0; i < 20; ++i)
+    add_body (w, CAROM_DYNAMIC, 3.0 * i, 0, 1, i);
+  {
+    carom_body_id ids[20];
+    assert_int_equal (carom_world_get_bodies (w, ids, 20), 20);
+    assert_status (carom_body_set_velocity (w, ids[0], 1e100, 0), CAROM_OK);
+    assert_status (carom_body_set_velocity (w, ids[19], 0, -1e100), CAROM_OK);
+  }
+  w->step_h = 1e300;
+  assert_true (same_pairs (w) > 0);
+  w->step_h = 0.0;
   carom_world_destroy (w);
   /* statics only: nothing to report; one body: nothing either */
   w = new_world ();
