@@ -194,12 +194,32 @@ static int32_t grid_cell (double x, double origin, double size, int32_t count)
   return !(c >= 0.0) ? 0 : c >= (double) count ? count - 1 : (int32_t) c;
 }
 
+/* The grid's frame: origin (u0, v0), square cells of `size`, nu x nv. */
+typedef struct grid_frame {
+  double u0, v0, size;
+  int32_t nu, nv;
+} grid_frame;
+
+/* The cells a box covers: columns a0..a1, rows b0..b1. */
+typedef struct cell_range {
+  int32_t a0, a1, b0, b1;
+} cell_range;
+
+static cell_range cells_of (const sweep_entry *e, const grid_frame *g)
+{
+  cell_range r;
+  r.a0 = grid_cell (e->lo, g->u0, g->size, g->nu), r.a1 = grid_cell (e->hi, g->u0, g->size, g->nu);
+  r.b0 = grid_cell (e->lo2, g->v0, g->size, g->nv), r.b1 = grid_cell (e->hi2, g->v0, g->size, g->nv);
+  return r;
+}
+
 int broadphase_grid (carom_world *world, pair_callback fn, void *user)
 {
   broadphase *bp = &world->broad;
   const sweep_entry *e;
-  double accel = v2_len (world->gravity), u0, u1, v0, v1, size = 0.0, limit;
-  int32_t n, i, j, k, nu, nv, cells, total, moving = 0;
+  grid_frame g;
+  double accel = v2_len (world->gravity), u1, v1, limit;
+  int32_t n, i, j, k, cells, total, moving = 0;
   if (!reserve_entries (world))
     return 0;
   n = fill_all (world, accel);
@@ -207,70 +227,71 @@ int broadphase_grid (carom_world *world, pair_callback fn, void *user)
   e = bp->entries;
   if (n == 0)
     return 1;
-  u0 = e[0].lo, u1 = e[0].hi, v0 = e[0].lo2, v1 = e[0].hi2;
+  g.u0 = e[0].lo, u1 = e[0].hi, g.v0 = e[0].lo2, v1 = e[0].hi2, g.size = 0.0;
   for (i = 0; i < n; ++i)
     {
-      u0 = fmin (u0, e[i].lo), u1 = fmax (u1, e[i].hi);
-      v0 = fmin (v0, e[i].lo2), v1 = fmax (v1, e[i].hi2);
+      g.u0 = fmin (g.u0, e[i].lo), u1 = fmax (u1, e[i].hi);
+      g.v0 = fmin (g.v0, e[i].lo2), v1 = fmax (v1, e[i].hi2);
       if (!e[i].is_static)
-        size += fmax (e[i].hi - e[i].lo, e[i].hi2 - e[i].lo2), moving++;
+        g.size += fmax (e[i].hi - e[i].lo, e[i].hi2 - e[i].lo2), moving++;
     }
   if (moving == 0)
     return 1; /* static pairs are never reported */
   /* boxes reaching past the doubles (a body of 1e100 moving at 1e100 for
    * 8 s): no grid spans them, and the sweep needs no cells */
-  if (!(isfinite (u1 - u0) && isfinite (v1 - v0) && isfinite (size)))
+  if (!(isfinite (u1 - g.u0) && isfinite (v1 - g.v0) && isfinite (g.size)))
     return broadphase_sweep (world, fn, user);
   /* cells of the mean moving box, but no more than 4 per body */
-  size /= moving;
+  g.size /= moving;
   limit = 4.0 * n + 16.0;
-  if (!(size > 0.0))
-    size = fmax (u1 - u0, v1 - v0) + 1.0;
+  if (!(g.size > 0.0))
+    g.size = fmax (u1 - g.u0, v1 - g.v0) + 1.0;
   /* and no more than 8 cell places per body in all (walls cover many) */
   for (;;)
     {
       double places = 0.0;
-      while ((floor ((u1 - u0) / size) + 1.0) * (floor ((v1 - v0) / size) + 1.0) > limit)
-        size *= 2.0;
-      nu = (int32_t) floor ((u1 - u0) / size) + 1;
-      nv = (int32_t) floor ((v1 - v0) / size) + 1;
+      while ((floor ((u1 - g.u0) / g.size) + 1.0) * (floor ((v1 - g.v0) / g.size) + 1.0) > limit)
+        g.size *= 2.0;
+      g.nu = (int32_t) floor ((u1 - g.u0) / g.size) + 1;
+      g.nv = (int32_t) floor ((v1 - g.v0) / g.size) + 1;
       for (i = 0; i < n; ++i)
-        places += (double) (grid_cell (e[i].hi, u0, size, nu) - grid_cell (e[i].lo, u0, size, nu) + 1)
-                  * (grid_cell (e[i].hi2, v0, size, nv) - grid_cell (e[i].lo2, v0, size, nv) + 1);
+        {
+          cell_range r = cells_of (&e[i], &g);
+          places += (double) (r.a1 - r.a0 + 1) * (r.b1 - r.b0 + 1);
+        }
       if (places <= 2.0 * limit)
         {
           total = (int32_t) places;
           break;
         }
-      size *= 2.0;
+      g.size *= 2.0;
     }
-  cells = nu * nv;
+  cells = g.nu * g.nv;
 
   /* count each cell's boxes, then place the boxes (in slot order) */
-  if (!mem_reserve (&world->allocator, (void **) &bp->cell_start, &bp->cell_cap, cells + 1, sizeof (int32_t)))
+  if (!mem_reserve (&world->allocator, (void **) &bp->cell_start, &bp->cell_cap, cells + 1, sizeof (int32_t))
+      || !mem_reserve (&world->allocator, (void **) &bp->cell_items, &bp->items_cap, total, sizeof (int32_t))
+      || !mem_reserve (&world->allocator, (void **) &bp->cell_fill, &bp->fill_cap, cells, sizeof (int32_t)))
     return 0;
   memset (bp->cell_start, 0, (size_t) (cells + 1) * sizeof (int32_t));
   for (i = 0; i < n; ++i)
     {
-      int32_t a0 = grid_cell (e[i].lo, u0, size, nu), a1 = grid_cell (e[i].hi, u0, size, nu);
-      int32_t b0 = grid_cell (e[i].lo2, v0, size, nv), b1 = grid_cell (e[i].hi2, v0, size, nv), a, b;
-      for (b = b0; b <= b1; ++b)
-        for (a = a0; a <= a1; ++a)
-          bp->cell_start[b * nu + a + 1]++;
+      cell_range r = cells_of (&e[i], &g);
+      int32_t a, b;
+      for (b = r.b0; b <= r.b1; ++b)
+        for (a = r.a0; a <= r.a1; ++a)
+          bp->cell_start[b * g.nu + a + 1]++;
     }
-  if (!mem_reserve (&world->allocator, (void **) &bp->cell_items, &bp->items_cap, total, sizeof (int32_t))
-      || !mem_reserve (&world->allocator, (void **) &bp->cell_fill, &bp->fill_cap, cells, sizeof (int32_t)))
-    return 0;
   for (k = 0; k < cells; ++k)
     bp->cell_start[k + 1] += bp->cell_start[k];
   memcpy (bp->cell_fill, bp->cell_start, (size_t) cells * sizeof (int32_t));
   for (i = 0; i < n; ++i)
     {
-      int32_t a0 = grid_cell (e[i].lo, u0, size, nu), a1 = grid_cell (e[i].hi, u0, size, nu);
-      int32_t b0 = grid_cell (e[i].lo2, v0, size, nv), b1 = grid_cell (e[i].hi2, v0, size, nv), a, b;
-      for (b = b0; b <= b1; ++b)
-        for (a = a0; a <= a1; ++a)
-          bp->cell_items[bp->cell_fill[b * nu + a]++] = i;
+      cell_range r = cells_of (&e[i], &g);
+      int32_t a, b;
+      for (b = r.b0; b <= r.b1; ++b)
+        for (a = r.a0; a <= r.a1; ++a)
+          bp->cell_items[bp->cell_fill[b * g.nu + a]++] = i;
     }
 
   for (k = 0; k < cells; ++k)
@@ -285,7 +306,8 @@ int broadphase_grid (carom_world *world, pair_callback fn, void *user)
               if (q->lo > p->hi || q->hi < p->lo || q->lo2 > p->hi2 || q->hi2 < p->lo2 || (p->is_static && q->is_static))
                 continue;
               /* reported by the cell of the overlap's low corner only */
-              if (grid_cell (fmax (p->lo, q->lo), u0, size, nu) + nu * grid_cell (fmax (p->lo2, q->lo2), v0, size, nv)
+              if (grid_cell (fmax (p->lo, q->lo), g.u0, g.size, g.nu)
+                      + g.nu * grid_cell (fmax (p->lo2, q->lo2), g.v0, g.size, g.nv)
                   != k)
                 continue;
               fn (world, p->slot, q->slot, user);

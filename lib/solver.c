@@ -86,6 +86,13 @@ static inline double relative_speed (const solver_body *a, const solver_body *b,
   return v2_dot (v2_sub (b->v, a->v), d) + b->w * rb_d - a->w * ra_d;
 }
 
+/* The same on the pseudo-velocities (position correction). */
+static inline double pseudo_relative_speed (const solver_body *a, const solver_body *b, vec2 d, double ra_d,
+                                            double rb_d)
+{
+  return v2_dot (v2_sub (b->pv, a->pv), d) + b->pw * rb_d - a->pw * ra_d;
+}
+
 static double effective_mass (const solver_body *a, const solver_body *b, double ra_d, double rb_d)
 {
   double k = a->im + b->im + a->ii * ra_d * ra_d + b->ii * rb_d * rb_d;
@@ -449,7 +456,7 @@ static void solve_positions (carom_world *world)
           /* pseudo_impulse starts at 0, so a point without bias never acts */
           if (p->bias == 0.0)
             continue;
-          vn = v2_dot (v2_sub (b->pv, a->pv), p->normal) + b->pw * p->rn_b - a->pw * p->rn_a;
+          vn = pseudo_relative_speed (a, b, p->normal, p->rn_a, p->rn_b);
           acc = p->pseudo_impulse - p->normal_mass * (vn - p->bias);
           if (acc < 0.0)
             acc = 0.0;
@@ -573,7 +580,7 @@ static void shock_pass (carom_world *world, const int32_t *order, int32_t count,
         {
           const contact_point *p = &k->points[j];
           /* the relative normal speed of b against a, as everywhere */
-          double vn = pseudo ? v2_dot (v2_sub (b->pv, a->pv), p->normal) + b->pw * p->rn_b - a->pw * p->rn_a
+          double vn = pseudo ? pseudo_relative_speed (a, b, p->normal, p->rn_a, p->rn_b)
                              : relative_speed (a, b, p->normal, p->rn_a, p->rn_b);
           err[j] = vn - (pseudo ? p->bias : p->target);
           worst = err[j] < worst ? err[j] : worst;
