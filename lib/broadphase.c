@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "step.h"
 #include "world.h"
 
 void broadphase_init (carom_world *world)
@@ -25,9 +26,9 @@ void broadphase_destroy (carom_world *world)
 /* Boxes grow by the body's contact margin and by how far it can move in
  * this sub-step, so pairs that are apart but within the margin, or that will
  * meet before the next detection, are still reported. */
-static void fill_entry (sweep_entry *e, const body *b, int axis, double slop, double h, double accel, int continuous)
+static void fill_entry (sweep_entry *e, const body *b, int axis, double slop, const step_context *ctx)
 {
-  double m = slop * b->shape.size + body_reach (b, h, accel, continuous);
+  double m = slop * b->shape.size + body_reach (b, ctx->h, ctx->accel, ctx->continuous);
   if (axis == 0)
     {
       e->lo = b->box_lo.x - m, e->hi = b->box_hi.x + m;
@@ -107,7 +108,7 @@ static int widest_axis (const carom_world *world)
 }
 
 /* Fill one entry per live body, in slot order (the grid needs no order). */
-static int32_t fill_all (carom_world *world, double accel)
+static int32_t fill_all (carom_world *world, const step_context *ctx)
 {
   broadphase *bp = &world->broad;
   int32_t i, n = 0;
@@ -115,8 +116,7 @@ static int32_t fill_all (carom_world *world, double accel)
     if (world->bodies[i].alive)
       {
         bp->entries[n].slot = i;
-        fill_entry (&bp->entries[n], &world->bodies[i], bp->axis, world->def.slop, world->step_h, accel,
-                    world->continuous);
+        fill_entry (&bp->entries[n], &world->bodies[i], bp->axis, world->def.slop, ctx);
         n++;
       }
   return n;
@@ -130,12 +130,11 @@ static int reserve_entries (carom_world *world)
                          sizeof (sweep_entry));
 }
 
-int broadphase_sweep (carom_world *world, pair_callback fn, void *user)
+int broadphase_sweep (carom_world *world, const step_context *ctx, pair_callback fn, void *user)
 {
   broadphase *bp = &world->broad;
   int32_t i, n;
   int axis = widest_axis (world);
-  double accel = v2_len (world->gravity);
   if (axis != bp->axis)
     {
       /* switch only for a clear difference, so the order stays coherent */
@@ -146,7 +145,7 @@ int broadphase_sweep (carom_world *world, pair_callback fn, void *user)
     return 0;
   if (bp->dirty)
     {
-      n = bp->count = fill_all (world, accel);
+      n = bp->count = fill_all (world, ctx);
       merge_sort (bp->entries, bp->scratch, n);
       bp->dirty = 0;
     }
@@ -154,8 +153,7 @@ int broadphase_sweep (carom_world *world, pair_callback fn, void *user)
     {
       n = bp->count;
       for (i = 0; i < n; ++i)
-        fill_entry (&bp->entries[i], &world->bodies[bp->entries[i].slot], bp->axis, world->def.slop, world->step_h, accel,
-                    world->continuous);
+        fill_entry (&bp->entries[i], &world->bodies[bp->entries[i].slot], bp->axis, world->def.slop, ctx);
       if (!insertion_sort (bp->entries, n))
         merge_sort (bp->entries, bp->scratch, n);
     }
@@ -213,16 +211,16 @@ static cell_range cells_of (const sweep_entry *e, const grid_frame *g)
   return r;
 }
 
-int broadphase_grid (carom_world *world, pair_callback fn, void *user)
+int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback fn, void *user)
 {
   broadphase *bp = &world->broad;
   const sweep_entry *e;
   grid_frame g;
-  double accel = v2_len (world->gravity), u1, v1, limit;
+  double u1, v1, limit;
   int32_t n, i, j, k, cells, total, moving = 0;
   if (!reserve_entries (world))
     return 0;
-  n = fill_all (world, accel);
+  n = fill_all (world, ctx);
   bp->dirty = 1; /* the sweep, if it runs again, starts afresh */
   e = bp->entries;
   if (n == 0)
@@ -240,7 +238,7 @@ int broadphase_grid (carom_world *world, pair_callback fn, void *user)
   /* boxes reaching past the doubles (a body of 1e100 moving at 1e100 for
    * 8 s): no grid spans them, and the sweep needs no cells */
   if (!(isfinite (u1 - g.u0) && isfinite (v1 - g.v0) && isfinite (g.size)))
-    return broadphase_sweep (world, fn, user);
+    return broadphase_sweep (world, ctx, fn, user);
   /* cells of the mean moving box, but no more than 4 per body */
   g.size /= moving;
   limit = 4.0 * n + 16.0;
@@ -317,7 +315,8 @@ int broadphase_grid (carom_world *world, pair_callback fn, void *user)
   return 1;
 }
 
-int broadphase_update (carom_world *world, pair_callback fn, void *user)
+int broadphase_update (carom_world *world, const step_context *ctx, pair_callback fn, void *user)
 {
-  return world->live_count >= GRID_MIN_BODIES ? broadphase_grid (world, fn, user) : broadphase_sweep (world, fn, user);
+  return world->live_count >= GRID_MIN_BODIES ? broadphase_grid (world, ctx, fn, user)
+                                              : broadphase_sweep (world, ctx, fn, user);
 }

@@ -11,6 +11,7 @@
 #include <stdint.h>
 
 struct carom_world;
+struct step_context;
 
 typedef struct sweep_entry {
   double lo, hi;     /* extent along the sweep axis */
@@ -40,11 +41,11 @@ void broadphase_init (struct carom_world *world);
 void broadphase_destroy (struct carom_world *world);
 /* Sort, then report each overlapping pair once (never two static bodies).
  * Returns 0 when memory ran out (nothing reported), 1 otherwise. */
-int broadphase_update (struct carom_world *world, pair_callback fn, void *user);
+int broadphase_update (struct carom_world *world, const struct step_context *ctx, pair_callback fn, void *user);
 
 /* The two methods broadphase_update chooses between, each reporting the
  * same set of pairs (in its own order). */
-int broadphase_sweep (struct carom_world *world, pair_callback fn, void *user);
-int broadphase_grid (struct carom_world *world, pair_callback fn, void *user);
+int broadphase_sweep (struct carom_world *world, const struct step_context *ctx, pair_callback fn, void *user);
+int broadphase_grid (struct carom_world *world, const struct step_context *ctx, pair_callback fn, void *user);
 
 #endif

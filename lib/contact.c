@@ -4,6 +4,7 @@
 
 #include <string.h>
 
+#include "step.h"
 #include "world.h"
 
 void contacts_init (carom_world *world)
@@ -135,13 +136,13 @@ static double material (double own, double fallback)
 
 static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
 {
+  const step_context *ctx = user;
   body *A, *B;
   pair_context pc;
   manifold m;
   xform xa, xb;
   double ea, eb, fa, fb;
   int32_t i, j;
-  (void) user;
   /* order: polygon before circle, else lower slot first, so the normal
    * convention of each narrow-phase test holds and the result does not
    * depend on the broad phase's order */
@@ -169,8 +170,8 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
   pc.slop = world->def.slop * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   /* speculative margin: pairs that can close their gap within this sub-step
    * are contacts now, so impacts are met before the bodies overlap */
-  pc.margin = pc.slop + body_reach (A, world->step_h, v2_len (world->gravity), world->continuous || B->bullet)
-              + body_reach (B, world->step_h, v2_len (world->gravity), world->continuous || A->bullet);
+  pc.margin = pc.slop + body_reach (A, ctx->h, ctx->accel, ctx->continuous || B->bullet)
+              + body_reach (B, ctx->h, ctx->accel, ctx->continuous || A->bullet);
   xa.p = A->p, xa.q = A->q;
   xb.p = B->p, xb.q = B->q;
 
@@ -230,7 +231,7 @@ void contacts_undo (carom_world *world)
   c->point_count = points;
 }
 
-carom_status contacts_update (carom_world *world)
+carom_status contacts_update (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
   contact *t = c->old;
@@ -240,7 +241,7 @@ carom_status contacts_update (carom_world *world)
   c->list = t, c->cap = tcap, c->count = 0;
   c->point_count = 0;
   c->out_of_memory = 0;
-  if (!build_table (world) || !broadphase_update (world, on_pair, NULL) || c->out_of_memory)
+  if (!build_table (world) || !broadphase_update (world, ctx, on_pair, (void *) ctx) || c->out_of_memory)
     {
       contacts_undo (world); /* the world is as it was */
       return CAROM_ERR_OUT_OF_MEMORY;
@@ -279,9 +280,11 @@ void contacts_forget_body (carom_world *world, int32_t slot)
 
 carom_status carom_world_detect (carom_world *world)
 {
+  step_context ctx;
   if (!world)
     return CAROM_ERR_NULL_ARGUMENT;
-  return contacts_update (world);
+  step_context_init (&ctx, world, 0.0); /* no sub-step: no look-ahead */
+  return contacts_update (world, &ctx);
 }
 
 int32_t carom_world_contact_count (const carom_world *world)

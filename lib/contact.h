@@ -6,6 +6,8 @@
 
 #include "collide.h"
 
+struct step_context;
+
 typedef struct contact_point {
   vec2 point, normal;   /* world frame; normal from body a to body b */
   double depth;
@@ -53,7 +55,7 @@ void contacts_init (struct carom_world *world);
 void contacts_destroy (struct carom_world *world);
 /* Detect all contacts at the current positions, carrying over the impulses
  * of matching points from the previous detection. */
-carom_status contacts_update (struct carom_world *world);
+carom_status contacts_update (struct carom_world *world, const struct step_context *ctx);
 /* Undo the last contacts_update (a later stage of the sub-step failed). */
 void contacts_undo (struct carom_world *world);
 /* Forget every contact that involves `slot` (the body is being removed). */

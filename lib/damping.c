@@ -2,8 +2,9 @@
 
 #include "world.h"
 
-void damping_update (carom_world *world, double h)
+void damping_update (carom_world *world, const step_context *ctx)
 {
+  double h = ctx->h;
   double kv, kw;
   int32_t i;
   if (world->damping_linear == 0.0 && world->damping_angular == 0.0)

@@ -25,9 +25,10 @@ vec2 gravity_dv (const carom_world *world, const body *b, double h)
   return v2_mad (dv, h, world->gravity);
 }
 
-void gravity_update (carom_world *world, double h)
+void gravity_update (carom_world *world, const step_context *ctx)
 {
-  vec2 dv = v2_scale (world->gravity, h);
+  double h = ctx->h;
+  vec2 dv = ctx->kick;
   int32_t i;
   if (world->central.active)
     for (i = 0; i < world->slot_count; ++i)

@@ -4,12 +4,13 @@
 #define CAROM_GRAVITY_H
 
 #include "body.h"
+#include "step.h"
 
 struct carom_world;
 
 /* v += g * h for every dynamic body, plus the central attraction when it
  * is on; nothing at all when both are off. */
-void gravity_update (struct carom_world *world, double h);
+void gravity_update (struct carom_world *world, const step_context *ctx);
 
 /* The velocity gravity_update gives body b in a sub-step of h, computed
  * where it stands now (the solver uses it to tell an impact's approach

@@ -31,8 +31,9 @@ void sleep_wake_touched (carom_world *world)
     }
 }
 
-void sleep_update (carom_world *world, double h)
+void sleep_update (carom_world *world, const step_context *ctx)
 {
+  double h = ctx->h;
   int32_t i;
   if (!world->sleeping)
     return;

@@ -5,11 +5,13 @@
 #ifndef CAROM_SLEEP_H
 #define CAROM_SLEEP_H
 
+#include "step.h"
+
 struct carom_world;
 
 /* After detection: wake sleeping bodies touched by a fast awake one. */
 void sleep_wake_touched (struct carom_world *world);
 /* After the drift: advance sleep timers, put slow bodies to sleep. */
-void sleep_update (struct carom_world *world, double h);
+void sleep_update (struct carom_world *world, const step_context *ctx);
 
 #endif

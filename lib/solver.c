@@ -661,8 +661,9 @@ void solver_destroy (carom_world *world)
   world->solver_cap = world->scratch_cap = 0;
 }
 
-void solver_update (carom_world *world, double h)
+void solver_update (carom_world *world, const step_context *ctx)
 {
+  double h = ctx->h;
   int32_t it, shocked, *order = NULL;
   double tol = 0.0;
   if (world->contacts.count == 0)

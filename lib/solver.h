@@ -5,6 +5,7 @@
 #ifndef CAROM_SOLVER_H
 #define CAROM_SOLVER_H
 
+#include "step.h"
 #include "vec2.h"
 
 struct carom_world;
@@ -21,7 +22,7 @@ typedef struct solver_body {
 /* Room for one solver body per slot; 0 when memory ran out. Called before
  * any state changes in a sub-step, so solver_update itself cannot fail. */
 int solver_reserve (struct carom_world *world);
-void solver_update (struct carom_world *world, double h);
+void solver_update (struct carom_world *world, const step_context *ctx);
 void solver_destroy (struct carom_world *world);
 
 #endif

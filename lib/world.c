@@ -11,6 +11,7 @@
 #include "gravity.h"
 #include "sleep.h"
 #include "solver.h"
+#include "step.h"
 
 static carom_status check_def (const carom_world_def *def)
 {
@@ -75,9 +76,10 @@ void carom_world_destroy (carom_world *world)
  * which is exact for uniform gravity (x0 + v0 t + g t^2 / 2 at every step);
  * a body in contact moves with the velocity the solver left it (symplectic
  * Euler), so a body at rest stays exactly at rest with zero velocity. */
-static void drift (carom_world *world, double h)
+static void drift (carom_world *world, const step_context *ctx)
 {
-  vec2 half_kick = v2_scale (world->gravity, 0.5 * h);
+  double h = ctx->h;
+  vec2 half_kick = v2_scale (ctx->kick, 0.5);
   int32_t i;
   for (i = 0; i < world->slot_count; ++i)
     {
@@ -121,10 +123,10 @@ static void check_finite (const carom_world *world)
 
 static carom_status substep (carom_world *world, double h)
 {
+  step_context ctx;
   carom_status st;
-  world->step_h = h;
-  st = contacts_update (world);
-  world->step_h = 0.0;
+  step_context_init (&ctx, world, h);
+  st = contacts_update (world, &ctx);
   if (st != CAROM_OK)
     return st;
   if (!solver_reserve (world))
@@ -133,11 +135,11 @@ static carom_status substep (carom_world *world, double h)
       return CAROM_ERR_OUT_OF_MEMORY;
     }
   sleep_wake_touched (world);
-  gravity_update (world, h);
-  damping_update (world, h);
-  solver_update (world, h);
-  drift (world, h);
-  sleep_update (world, h);
+  gravity_update (world, &ctx);
+  damping_update (world, &ctx);
+  solver_update (world, &ctx);
+  drift (world, &ctx);
+  sleep_update (world, &ctx);
   check_finite (world);
   return CAROM_OK;
 }

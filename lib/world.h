@@ -11,8 +11,6 @@ struct carom_world {
   carom_allocator allocator;
   carom_world_def def; /* settings; def.allocator is the caller's copy */
   vec2 gravity;
-  double step_h; /* current sub-step, 0 outside update: sizes the speculative
-                    contact margin */
 
   /* bodies: slots [0, slot_count), some dead; dead slots are reused LIFO */
   body *bodies;
