@@ -3,10 +3,12 @@
 # usage: bench/run-bench.sh BENCH_DIR [OUTPUT]     (make bench calls it)
 #
 # BENCH_DIR holds the bench binaries (bench_carom, bench_broadphase, and
-# bench_chipmunk / bench_box2d when the peers were built); raw outputs and
-# callgrind profiles are left there, never in git. Engines run interleaved
-# (carom, chipmunk, box2d, carom, ...) REPEATS times, so machine noise hits
-# them alike; the tables show the median. Environment: BENCH_REPEATS (3).
+# bench_chipmunk / bench_box2d / bench_box2d3 when the peers were built, with
+# box2d3-version.txt naming the Box2D v3 tree it was built from); raw outputs
+# and callgrind profiles are left there, never in git. Engines run
+# interleaved (carom, chipmunk, box2d, box2d3, carom, ...) REPEATS times, so
+# machine noise hits them alike; the tables show the median. Environment:
+# BENCH_REPEATS (3).
 set -eu
 
 B=${1:-build/bench}
@@ -25,6 +27,7 @@ fi
 ENGINES="carom"
 have bench_chipmunk && ENGINES="$ENGINES chipmunk"
 have bench_box2d && ENGINES="$ENGINES box2d box2d-sleep"
+have bench_box2d3 && ENGINES="$ENGINES box2d3"
 
 # Steps per scene: a warm-up that is not timed, then the timed steps; the
 # accuracy figures are read after both (10 s of simulated time).
@@ -171,6 +174,18 @@ mhz=$(sed -n 's/^cpu MHz[[:space:]]*: //p' /proc/cpuinfo | head -n 1)
 ccv=$(${CC:-cc} --version | head -n 1)
 cxxv=$(${CXX:-c++} --version 2>/dev/null | head -n 1 || echo "none")
 pkgv () { dpkg-query -W -f='${Version}' "$1" 2>/dev/null || echo "not installed"; }
+# Box2D v3: built from a source tree by mk/bench.mk, which records its commit
+B3V=$(cat "$B/box2d3-version.txt" 2>/dev/null || true)
+b3v () { v=$(key "$1" "$B3V"); echo "${v:-unknown}"; }
+case " $ENGINES " in
+*" box2d3 "*) HAVE_B3=yes ;;
+*) HAVE_B3=no ;;
+esac
+if [ "$HAVE_B3" = yes ]; then
+  B3_PEER="; Box2D v3 $(b3v version) built from source, commit \`$(b3v commit)\` ($(b3v date)) of github erincatto/box2d"
+else
+  B3_PEER="; Box2D v3 not built (\`make bench BOX2D3_DIR=...\`)"
+fi
 LOAD_END=$(cut -d' ' -f1-3 /proc/loadavg)
 ELAPSED=$(($(date +%s) - START))
 
@@ -180,7 +195,32 @@ engine_name () {
   chipmunk) echo "Chipmunk 7" ;;
   box2d) echo "Box2D 2.4" ;;
   box2d-sleep) echo "Box2D 2.4, sleep on" ;;
+  box2d3) echo "Box2D v3" ;;
   esac
+}
+
+# One row per scene: carom's median ms/step, then each other engine's with
+# carom / engine beside it.
+summary_table () {
+  h="| scene | carom ms/step |"
+  d="|---|---:|"
+  for e in $ENGINES; do
+    [ "$e" = carom ] && continue
+    h="$h $(engine_name "$e") ms/step | carom / $(engine_name "$e") |"
+    d="$d---:|---:|"
+  done
+  echo "$h"
+  echo "$d"
+  for s in pyramid rain gas; do
+    cm=$(med_ms carom "$s")
+    row="| $s | $cm |"
+    for e in $ENGINES; do
+      [ "$e" = carom ] && continue
+      m=$(med_ms "$e" "$s")
+      row="$row $m | $(ratio "$cm" "$m") |"
+    done
+    echo "$row"
+  done
 }
 
 scene_table () {
@@ -207,7 +247,7 @@ in ${ELAPSED} s. Do not edit by hand: run it again.
 Machine: $(nproc) cores, $cpu (${mhz} MHz), load average $LOAD_START at the start and
 $LOAD_END at the end (other work shares this machine; every figure is single
 threaded). Compilers: $ccv; $cxxv. Peers: libchipmunk-dev $(pkgv libchipmunk-dev),
-libbox2d-dev $(pkgv libbox2d-dev) (Debian packages).
+libbox2d-dev $(pkgv libbox2d-dev) (Debian packages)${B3_PEER}.
 
 ## How it is measured
 
@@ -232,10 +272,13 @@ libbox2d-dev $(pkgv libbox2d-dev) (Debian packages).
 * Rounds: the engines run interleaved ($ENGINES), $REPEATS rounds; the
   table gives the median, then every round. **carom / engine** > 1 means carom is slower.
 * Build: every bench is compiled by the same compiler with \`-O2 -g\` (\`\$(OPT)\`);
-  C with \`-std=c99\`, the Box2D bench with \`-std=c++17\`. carom is linked statically
-  from this tree; the peers are Debian's shared libraries as packaged (their own
+  C with \`-std=c99\` (the Box2D v3 bench with \`-std=c11\`, which its headers need),
+  the Box2D 2.4 bench with \`-std=c++17\`. carom is linked statically from this tree;
+  Chipmunk and Box2D 2.4 are Debian's shared libraries as packaged (their own
   flags). Debian's Chipmunk is built **without NDEBUG** (it prints "Debug Enabled":
-  its runtime assertions are on), which costs it some speed.
+  its runtime assertions are on), which costs it some speed. Box2D v3 is built
+  from its source tree by its own CMake in Release (\`-O3 -DNDEBUG\`, its default
+  SSE2 code, AVX2 off) and linked statically.
 * Settings: carom with its defaults (substeps 1, iterations 8; other settings
   below). Chipmunk: iterations 10, collision slop 0.01 (its default 0.1 is meant
   for pixel-sized bodies), no sleeping (its default), bounding-box tree. Box2D:
@@ -243,12 +286,25 @@ libbox2d-dev $(pkgv libbox2d-dev) (Debian packages).
   default), sleeping **off** so that every engine steps every body every step;
   the extra row "sleep on" is Box2D's own default. Box2D's restitution threshold
   (1 m/s) is set to 0 in the gas, where there is no gravity, as carom does.
+  Box2D v3: its defaults (4 sub-steps per step, contact hertz 30, damping
+  ratio 10, continuous collision on), one worker and no task system (single
+  threaded), sleeping **off** as for Box2D 2.4, restitution threshold 0 in the gas.
   Friction and restitution are given per shape so that each engine's mixing
   rule yields the scene's mu and e (Chipmunk multiplies: sqrt(mu) per shape).
-  Box2D computes in float, carom and Chipmunk in double.
+  Box2D (2.4 and v3) computes in float, carom and Chipmunk in double.
+* Box2D v3's contact points include its speculative points (manifold points up
+  to 4 linear slops, 0.02, apart, not yet touching), so its counts run higher
+  where bodies rest near one another (the rain).
 * In the rain, Box2D 2.4 spends about half its time in continuous collision
   (b2World::SolveTOI, by \`perf\`), work that Box2D v3 no longer does this way;
   sleeping barely helps it there in 10 s because the pile keeps settling.
+
+## Summary
+
+Median ms/step of each engine and carom / engine (> 1: carom is slower); the
+tables below give every round and the accuracy figures.
+
+$(summary_table)
 
 ## Pyramid (210 boxes)
 
@@ -262,9 +318,12 @@ $(scene_table rain)
 
 $(scene_table gas)
 
-Targets stated in the issue (Box2D v3 / Chipmunk 7 measured by others on this
-machine): pyramid 0.15 / 0.39 ms, rain 1.3 / 3.6 ms, gas 0.29 / 0.16 ms. Box2D v3
-is not packaged for Debian 12, so Box2D 2.4 stands in for it here.
+Targets (Box2D v3 / Chipmunk 7, measured by others on this machine): pyramid
+0.15 / 0.39 ms, rain 1.3 / 3.6 ms, gas 0.29 / 0.16 ms. $(if [ "$HAVE_B3" = yes ]; then
+  echo "Box2D v3 in this run (commit \`$(b3v commit)\`): pyramid $(med_ms box2d3 pyramid), rain $(med_ms box2d3 rain), gas $(med_ms box2d3 gas) ms."
+else
+  echo "Box2D v3 is not packaged for Debian 12 and was not built for this run (\`BOX2D3_DIR\`), so Box2D 2.4 stands in for it here."
+fi)
 
 ## carom settings tried
 
@@ -377,18 +436,31 @@ EOF
       echo
     done
   fi
-  cat <<'EOF'
-## Where carom is slower, and what is planned
-
-The targets were Box2D v3 (not packaged for Debian 12, so not in this run)
-at 0.15 ms for the pyramid, 1.3 ms for the rain and 0.29 ms for the gas, and
-Chipmunk 7 at 0.39 / 3.6 / 0.16 ms, measured by others on this machine.
-Against the engines measured in this run, carom is fastest on the gas (where
-it is also the one that keeps its energy, docs/accuracy.md) and on the rain,
-and level with Chipmunk on the pyramid (within a few percent either way from
-run to run on this shared machine: compare the rounds). Against Box2D v3's
+  echo "## Where carom is slower, and what is planned"
+  echo
+  if [ "$HAVE_B3" = yes ]; then
+    cat <<EOF
+The targets were Box2D v3 at 0.15 ms for the pyramid, 1.3 ms for the rain and
+0.29 ms for the gas, and Chipmunk 7 at 0.39 / 3.6 / 0.16 ms, measured by others
+on this machine. Box2D v3 ran here too (commit \`$(b3v commit)\`): carom / Box2D v3
+is $(ratio "$(med_ms carom pyramid)" "$(med_ms box2d3 pyramid)") on the pyramid, $(ratio "$(med_ms carom rain)" "$(med_ms box2d3 rain)") on the rain and $(ratio "$(med_ms carom gas)" "$(med_ms box2d3 gas)") on the gas
+(> 1: carom is slower; the other engines are in the summary above). Where carom is
+behind, the profile above shows why:
+EOF
+  else
+    cat <<'EOF'
+The targets were Box2D v3 (not built for this run: see BOX2D3_DIR in
+mk/bench.mk) at 0.15 ms for the pyramid, 1.3 ms for the rain and 0.29 ms for
+the gas, and Chipmunk 7 at 0.39 / 3.6 / 0.16 ms, measured by others on this
+machine. Against the engines measured in this run, carom is fastest on the gas
+(where it is also the one that keeps its energy, docs/accuracy.md) and on the
+rain, and level with Chipmunk on the pyramid (within a few percent either way
+from run to run on this shared machine: compare the rounds). Against Box2D v3's
 figures it is behind on the pyramid (about 2x) and the rain (about 3x), for
 reasons the profile above shows:
+EOF
+  fi
+  cat <<'EOF'
 
 - **The solver is most of the time (50-60%).** carom runs 8 velocity passes
   per step in double precision, one contact point at a time, plus position

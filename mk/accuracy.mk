@@ -8,17 +8,17 @@
 # Raw outputs stay in $(BUILD)/accuracy/. Use a tree of your own:
 #   make BUILD=build-acc bench-accuracy
 # Peer binaries are built only when their headers exist; the check runs in
-# the sub-make, after ensure-deps may have installed them.
+# the sub-make, after ensure-deps may have installed them. Objects and the
+# link rule are the benches' own (mk/bench.mk).
 
-ACC_DIR      := $(BUILD)/accuracy
-ACC_CXXFLAGS := -std=c++17 -Wall -Wextra
-ACC_HAS_CHIPMUNK = $(shell printf '\043include <chipmunk/chipmunk.h>\n' | $(CC) -E -x c - >/dev/null 2>&1 && echo yes)
-ACC_HAS_BOX2D = $(shell printf '\043include <box2d/box2d.h>\n' | $(CXX) -E -x c++ - >/dev/null 2>&1 && echo yes)
-ACC_COMMON   := $(ACC_DIR)/accuracy_measures.o $(ACC_DIR)/scenes.o
+include mk/bench.mk
+
+ACC_DIR    := $(BUILD)/accuracy
+ACC_COMMON := accuracy_measures scenes
 
 ACC_BIN = $(ACC_DIR)/accuracy \
-          $(if $(ACC_HAS_CHIPMUNK),$(ACC_DIR)/accuracy_chipmunk) \
-          $(if $(ACC_HAS_BOX2D),$(ACC_DIR)/accuracy_box2d)
+          $(if $(BENCH_HAS_CHIPMUNK),$(ACC_DIR)/accuracy_chipmunk) \
+          $(if $(BENCH_HAS_BOX2D),$(ACC_DIR)/accuracy_box2d)
 
 .PHONY: bench-accuracy bench-accuracy-build
 bench: bench-accuracy
@@ -31,23 +31,6 @@ bench-accuracy:
 bench-accuracy-build: $(BUILD)/libcarom.a
 	@$(MAKE) --no-print-directory $(ACC_BIN)
 
-$(ACC_DIR)/%.o: bench/%.c
-	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) -Ibench $(WARN) $(OPT) $(CFLAGS) -c $< -o $@
-
-$(ACC_DIR)/%.o: bench/peers/%.c
-	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) -Ibench $(WARN) $(OPT) $(CFLAGS) -c $< -o $@
-
-$(ACC_DIR)/%.o: bench/peers/%.cpp
-	@mkdir -p $(@D)
-	$(CXX) $(CPPFLAGS) -Ibench $(ACC_CXXFLAGS) $(OPT) $(CXXFLAGS) -c $< -o $@
-
-$(ACC_DIR)/accuracy: $(ACC_DIR)/accuracy.o $(ACC_DIR)/carom_scene.o $(ACC_COMMON) $(BUILD)/libcarom.a
-	$(CC) $(LDFLAGS) -o $@ $^ -lm
-
-$(ACC_DIR)/accuracy_chipmunk: $(ACC_DIR)/accuracy_chipmunk.o $(ACC_COMMON)
-	$(CC) $(LDFLAGS) -o $@ $^ -lchipmunk -lm
-
-$(ACC_DIR)/accuracy_box2d: $(ACC_DIR)/accuracy_box2d.o $(ACC_COMMON)
-	$(CXX) $(LDFLAGS) -o $@ $^ -lbox2d -lm
+$(eval $(call bench_program,$(ACC_DIR)/accuracy,accuracy carom_scene $(ACC_COMMON),$(BUILD)/libcarom.a))
+$(eval $(call bench_program,$(ACC_DIR)/accuracy_chipmunk,accuracy_chipmunk $(ACC_COMMON),-lchipmunk))
+$(eval $(call bench_program,$(ACC_DIR)/accuracy_box2d,accuracy_box2d $(ACC_COMMON),-lbox2d))

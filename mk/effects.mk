@@ -5,6 +5,9 @@
 #   make bench-effects-build  only build $(BUILD)/effects/bench_effects
 # Raw outputs and callgrind profiles stay in $(BUILD)/effects/. Use a tree of
 # your own: make BUILD=build-eff bench-effects
+# Objects and the link rule are the benches' own (mk/bench.mk).
+
+include mk/bench.mk
 
 EFF_DIR := $(BUILD)/effects
 
@@ -16,10 +19,5 @@ bench-effects: bench-effects-build
 bench-effects-build: $(BUILD)/libcarom.a
 	@$(MAKE) --no-print-directory $(EFF_DIR)/bench_effects
 
-$(EFF_DIR)/%.o: bench/%.c bench/scenes.h
-	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) -Ibench $(WARN) $(OPT) $(CFLAGS) -c $< -o $@
-
-$(EFF_DIR)/bench_effects: $(EFF_DIR)/bench_effects.o $(EFF_DIR)/carom_scene.o $(EFF_DIR)/scenes.o $(BUILD)/libcarom.a
-	$(CC) $(LDFLAGS) -o $@ $^ -lm
+$(eval $(call bench_program,$(EFF_DIR)/bench_effects,bench_effects carom_scene scenes,$(BUILD)/libcarom.a))
 bench: bench-effects
