@@ -167,13 +167,8 @@ int main (int argc, char **argv)
   char settings[64];
   double t0, x0 = 0.0, y0 = 0.0;
   int i, rc = 0;
-  if (bench_parse (&o, argc, argv) < 0)
+  if (bench_begin (&o, &s, argc, argv, "bench_carom") < 0)
     return 2;
-  if (bench_scene_make (&s, o.scene, o.bodies) < 0)
-    {
-      fprintf (stderr, "bench_carom: cannot make scene %s of %d bodies\n", o.scene, o.bodies);
-      return 2;
-    }
   ids = calloc ((size_t) s.count, sizeof *ids);
   if (!ids)
     return 1;

@@ -353,3 +353,15 @@ void bench_report (const bench_options *o, const bench_scene *s, const bench_res
   printf (" escaped=%d contacts=%d settings=%s\n", r->escaped, r->contacts, r->settings);
   fflush (stdout);
 }
+
+int bench_begin (bench_options *o, bench_scene *s, int argc, char **argv, const char *program)
+{
+  if (bench_parse (o, argc, argv) < 0)
+    return -1;
+  if (bench_scene_make (s, o->scene, o->bodies) < 0)
+    {
+      fprintf (stderr, "%s: cannot make scene %s of %d bodies\n", program, o->scene, o->bodies);
+      return -1;
+    }
+  return 0;
+}

@@ -95,6 +95,10 @@ typedef struct bench_options {
  * printing a usage message to stderr. */
 int bench_parse (bench_options *o, int argc, char **argv);
 
+/* Every bench's start: parse argv into `o`, then make its scene in `s`;
+ * prints what went wrong, naming `program`, and returns -1 on error. */
+int bench_begin (bench_options *o, bench_scene *s, int argc, char **argv, const char *program);
+
 /* Seconds on CLOCK_MONOTONIC. */
 double bench_now (void);
 

@@ -80,13 +80,8 @@ int main (int argc, char **argv)
 {
   bench_options o;
   bench_scene s;
-  if (bench_parse (&o, argc, argv) < 0)
+  if (bench_begin (&o, &s, argc, argv, "bench_box2d") < 0)
     return 2;
-  if (bench_scene_make (&s, o.scene, o.bodies) < 0)
-    {
-      std::fprintf (stderr, "bench_box2d: cannot make scene %s of %d bodies\n", o.scene, o.bodies);
-      return 2;
-    }
   int velocity_iterations = o.iterations > 0 ? o.iterations : 8, position_iterations = 3;
   int sub = o.substeps > 0 ? o.substeps : 1;
   float threshold = (s.gravity_x == 0.0 && s.gravity_y == 0.0) ? 0.0f : 1.0f;
