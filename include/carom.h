@@ -5,8 +5,7 @@
  * positive angles, y up. SI units are suggested, never assumed.
  *
  * Every fallible call returns a carom_status (CAROM_OK = 0) and changes
- * nothing when it fails (the one exception, an update that runs out of
- * memory after some of its sub-steps, is documented at carom_world_update). Bodies are named by carom_body_id values: a removed
+ * nothing when it fails. Bodies are named by carom_body_id values: a removed
  * body's id is detected as stale (CAROM_ERR_STALE_BODY), never dereferenced.
  *
  * Structs that cross the ABI start with a `size` field and only ever grow by
@@ -122,6 +121,8 @@ typedef enum carom_narrow_phase {
  * knobs that trade time for accuracy; docs/accuracy.md measures what each
  * one costs and what error it removes (more substeps help almost every
  * error; more iterations help stacks; the other three help overlap).
+ * Contacts are found once per update; the sub-steps solve them again and
+ * again as the bodies move, which is what holds stacks at the defaults.
  */
 typedef struct carom_world_def {
   uint32_t size;           /**< the caller's sizeof, set by def_init */
@@ -129,11 +130,12 @@ typedef struct carom_world_def {
   double gravity_y;
   double restitution;      /**< default e for bodies, in [0, 1]; default 0 */
   double friction;         /**< default Coulomb mu, >= 0; default 0 */
-  int32_t substeps;        /**< sub-steps per update, >= 1; default 1 */
-  int32_t iterations;      /**< solver iterations per sub-step, >= 1;
-                                default 8 */
-  double position_correction; /**< fraction of overlap removed per sub-step,
-                                   in [0, 1]; default 0.2 */
+  int32_t substeps;        /**< sub-steps per update, >= 1; default 4 */
+  int32_t iterations;      /**< solver passes per sub-step (each a solve
+                                and a relax pass), >= 1; default 1 */
+  double position_correction; /**< fraction of the overlap beyond the slop
+                                   removed per sub-step, in [0, 1];
+                                   default 0.2 */
   double slop;             /**< overlap allowed before correction, as a
                                 fraction of the smaller body's size (twice
                                 its area over its perimeter); default 0.01 */
@@ -162,11 +164,12 @@ CAROM_API carom_status carom_world_init (carom_world **world,
 CAROM_API void carom_world_destroy (carom_world *world);
 
 /**
- * Advance the world by `dt` (time units, 1e-100 <= dt <= 1e100): forces, collision
- * detection, collision resolution, integration, in `substeps` sub-steps.
- * Errors: NULL_ARGUMENT and BAD_TIME_STEP change nothing. OUT_OF_MEMORY
- * leaves the world valid and usable: the sub-step that failed changed no
- * body, but sub-steps completed before it (with substeps > 1) remain.
+ * Advance the world by `dt` (time units, 1e-100 <= dt <= 1e100): collision
+ * detection once, then forces, collision resolution and integration in
+ * `substeps` sub-steps. Errors: NULL_ARGUMENT, BAD_TIME_STEP and
+ * OUT_OF_MEMORY change nothing (memory is only asked for before the first
+ * sub-step); after OUT_OF_MEMORY the world is valid and usable, and the
+ * same update, repeated, gives what it would have given.
  */
 CAROM_API carom_status carom_world_update (carom_world *world, double dt);
 

@@ -22,11 +22,6 @@ typedef struct body {
   uint32_t generation;          /* part of the id; bumped on removal */
   shape shape;
   vec2 box_lo, box_hi;          /* world-space bounding box */
-  /* split-impulse pseudo-velocities: position correction that never
-   * touches v and w, so it adds no kinetic energy */
-  vec2 pv;
-  double pw;
-  int32_t touching; /* had a contact this sub-step (set by the solver) */
   int32_t fixed_rotation; /* non-rotating: inv_inertia stays 0 */
   int32_t bullet;         /* continuous collision even when the world's is off */
   int32_t asleep;         /* sleeping: zero inverse mass, not moved */

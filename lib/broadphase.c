@@ -28,7 +28,7 @@ void broadphase_destroy (carom_world *world)
  * meet before the next detection, are still reported. */
 static void fill_entry (sweep_entry *e, const body *b, int axis, double slop, const step_context *ctx)
 {
-  double m = slop * b->shape.size + body_reach (b, ctx->h, ctx->accel, ctx->continuous);
+  double m = slop * b->shape.size + body_reach (b, ctx->dt, ctx->accel, ctx->continuous);
   if (axis == 0)
     {
       e->lo = b->box_lo.x - m, e->hi = b->box_hi.x + m;

@@ -168,10 +168,10 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
   pc.restitution = ea > eb ? ea : eb;
   pc.friction = sqrt (fa * fb);
   pc.slop = world->def.slop * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
-  /* speculative margin: pairs that can close their gap within this sub-step
+  /* speculative margin: pairs that can close their gap within this step
    * are contacts now, so impacts are met before the bodies overlap */
-  pc.margin = pc.slop + body_reach (A, ctx->h, ctx->accel, ctx->continuous || B->bullet)
-              + body_reach (B, ctx->h, ctx->accel, ctx->continuous || A->bullet);
+  pc.margin = pc.slop + body_reach (A, ctx->dt, ctx->accel, ctx->continuous || B->bullet)
+              + body_reach (B, ctx->dt, ctx->accel, ctx->continuous || A->bullet);
   xa.p = A->p, xa.q = A->q;
   xb.p = B->p, xb.q = B->q;
 
@@ -283,7 +283,7 @@ carom_status carom_world_detect (carom_world *world)
   step_context ctx;
   if (!world)
     return CAROM_ERR_NULL_ARGUMENT;
-  step_context_init (&ctx, world, 0.0); /* no sub-step: no look-ahead */
+  step_context_init (&ctx, world, 0.0); /* no step: no look-ahead */
   return contacts_update (world, &ctx);
 }
 

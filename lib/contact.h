@@ -9,19 +9,28 @@
 struct step_context;
 
 typedef struct contact_point {
-  vec2 point, normal;   /* world frame; normal from body a to body b */
-  double depth;
+  vec2 point, normal;   /* world frame at detection; normal from body a to body b */
+  double depth;         /* penetration at detection (negative: apart) */
   uint32_t feature;
-  /* solver data */
+  /* the contact constraint's data (contact_solver.c), fixed for the step */
   vec2 ra, rb;          /* from each centre of mass to the point */
   double rn_a, rn_b;    /* ra x n, rb x n */
   double rt_a, rt_b;    /* ra x t, rb x t, t the tangent */
   double normal_mass;   /* 1 / (denominator of eq. 3.23) */
   double tangent_mass;
-  double target;        /* normal relative velocity to reach (restitution) */
-  double bias;          /* pseudo-velocity that removes overlap */
-  double toi;           /* an impact this far into the sub-step, or 0 */
-  double normal_impulse, tangent_impulse, pseudo_impulse;
+  double adjusted;      /* separation at detection less (rb - ra) . n: the
+                           separation is adjusted + (moved b - moved a) . n */
+  double approach;      /* normal relative speed the point met with (what
+                           restitution reverses; see contact_solver.c) */
+  double normal_impulse, tangent_impulse; /* accumulated in the sub-steps,
+                                             kept for warm starting */
+  double total_impulse, tangent_total;    /* all the impulse of this step
+                                             (each sub-step's, and
+                                             restitution's) */
+  double normal_moment, tangent_moment;   /* sum of impulse x time left in
+                                             the step when applied */
+  double toi;                             /* apart and closing at detection:
+                                             when it meets, else -1 */
 } contact_point;
 
 typedef struct contact {
@@ -29,11 +38,11 @@ typedef struct contact {
   int32_t piece_a, piece_b;   /* convex pieces (or -1 for the whole outline) */
   double restitution, friction;
   double slop;                /* overlap left alone, from the bodies' sizes */
+  double max_push;            /* fastest push-out speed, from the bodies' radii */
   int32_t first_point;        /* index of points[0] among all points */
   int32_t block;              /* two points solved as one 2x2 problem */
-  int32_t deferred;           /* bouncy, apart, not meeting: sits out */
-  int32_t overlapping;        /* some point has a position bias */
-  double k11, k12, k22, det;  /* its matrix, set by the solver's prepare */
+  int32_t met;                /* pushed this step (its approach is measured) */
+  double k11, k12, k22;       /* its matrix (eq. 3.23's denominators and their coupling) */
   int32_t count;
   contact_point points[MANIFOLD_MAX_POINTS];
 } contact;

@@ -1,23 +1,19 @@
 #include "damping.h"
 
+#include "solver.h"
 #include "world.h"
 
 void damping_update (carom_world *world, const step_context *ctx)
 {
-  double h = ctx->h;
-  double kv, kw;
+  solver_body *sb = world->solver_bodies;
   int32_t i;
-  if (world->damping_linear == 0.0 && world->damping_angular == 0.0)
+  if (!ctx->damping)
     return;
-  /* exp(-c h) per step compounds to exactly exp(-c t) at every step */
-  kv = exp (-world->damping_linear * h);
-  kw = exp (-world->damping_angular * h);
+  /* exp(-c h) per sub-step compounds to exactly exp(-c t) at every step */
   for (i = 0; i < world->slot_count; ++i)
-    {
-      body *b = &world->bodies[i];
-      if (!b->alive || b->inv_mass == 0.0)
-        continue;
-      b->v = v2_scale (b->v, kv);
-      b->w *= kw;
-    }
+    if (sb[i].moves)
+      {
+        sb[i].v = v2_scale (sb[i].v, ctx->damp_v);
+        sb[i].w *= ctx->damp_w;
+      }
 }

@@ -1,4 +1,3 @@
-/* Damping: velocities decay as exp(-c t), applied exactly each sub-step. */
 #ifndef CAROM_DAMPING_H
 #define CAROM_DAMPING_H
 
@@ -6,7 +5,9 @@
 
 struct carom_world;
 
-/* Nothing at all when both rates are zero. */
+/* Velocities decay as exp(-linear t), spins as exp(-angular t): one
+ * sub-step's factor (ctx->damp_v, ctx->damp_w) on every body the sub-steps
+ * move; nothing at all when damping is off. */
 void damping_update (struct carom_world *world, const step_context *ctx);
 
 #endif

@@ -28,8 +28,8 @@ static carom_world_def world_defaults (void)
   carom_world_def d;
   memset (&d, 0, sizeof d);
   d.size = sizeof d;
-  d.substeps = 1;
-  d.iterations = 8;
+  d.substeps = 4;
+  d.iterations = 1;
   d.position_correction = 0.2;
   d.slop = 0.01;
   d.narrow_phase = CAROM_NARROW_SAT;

@@ -1,20 +1,28 @@
-/* Gravity: uniform acceleration, a velocity kick before the solver sees the
- * velocities (the drift makes free flight exact; see world.c). */
+/* Gravity: uniform acceleration and the attraction of a central point mass,
+ * as a velocity kick at the start of each sub-step, and the half of that
+ * kick a free body takes back when it moves (its undo), so that free flight
+ * is exact. Both live here, side by side. */
 #ifndef CAROM_GRAVITY_H
 #define CAROM_GRAVITY_H
 
-#include "body.h"
+#include "solver.h"
 #include "step.h"
 
 struct carom_world;
 
-/* v += g * h for every dynamic body, plus the central attraction when it
- * is on; nothing at all when both are off. */
-void gravity_update (struct carom_world *world, const step_context *ctx);
+/* v += g h for every body the sub-steps move, plus the central attraction
+ * when it is on; nothing at all when both are off. */
+void gravity_kick (struct carom_world *world, const step_context *ctx);
 
-/* The velocity gravity_update gives body b in a sub-step of h, computed
- * where it stands now (the solver uses it to tell an impact's approach
- * from what gravity added after the bodies met). */
-vec2 gravity_dv (const struct carom_world *world, const body *b, double h);
+/* The velocity a body moves with over a sub-step. A free body moves with
+ * the mean of its velocities before and after the uniform kick,
+ * x += (v - g h / 2) h, which is x0 + v0 t + g t^2 / 2 at every sub-step:
+ * exact for uniform gravity. A body some constraint acts on moves with the
+ * velocity the solver left it (symplectic Euler), so a body at rest stays
+ * exactly at rest. */
+static inline vec2 gravity_drift_velocity (const step_context *ctx, const solver_body *b)
+{
+  return b->constrained ? b->v : v2_mad (b->v, -0.5, ctx->kick);
+}
 
 #endif

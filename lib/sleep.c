@@ -33,7 +33,7 @@ void sleep_wake_touched (carom_world *world)
 
 void sleep_update (carom_world *world, const step_context *ctx)
 {
-  double h = ctx->h;
+  double h = ctx->dt; /* sleep is judged once per update */
   int32_t i;
   if (!world->sleeping)
     return;

@@ -1,7 +1,6 @@
-/* Collision resolution: sequential impulses over all contact points at once,
- * each impulse the one of eq. 3.23 (with the relative velocity of the
- * contact points), accumulated and clamped so contacts only push; then
- * split-impulse position correction. */
+/* The solver: the order of the stages within one update (solver.c) and the
+ * per-body state every constraint reads and writes. The contact constraint
+ * itself is in contact_solver.c. */
 #ifndef CAROM_SOLVER_H
 #define CAROM_SOLVER_H
 
@@ -10,19 +9,25 @@
 
 struct carom_world;
 
-/* What the iterations read and write per body, kept compact. */
+/* What the sub-steps read and write per body, kept compact: velocities,
+ * the motion since the step began (so constraints measure their current
+ * error without recomputing any geometry), and inverse mass and inertia. */
 typedef struct solver_body {
   vec2 v;
   double w;
-  vec2 pv;      /* split-impulse pseudo-velocity */
-  double pw;
+  vec2 dp;       /* displacement of the centre of mass since the step began */
+  rot2 dq;       /* rotation since the step began (for the constraints) */
+  double da;     /* the same rotation as an angle (for the body) */
   double im, ii; /* inverse mass and inertia (0: cannot be moved) */
+  int32_t constrained; /* some constraint acts on it this step */
+  int32_t moves;       /* dynamic and awake: the sub-steps move it */
 } solver_body;
 
 /* Room for one solver body per slot; 0 when memory ran out. Called before
- * any state changes in a sub-step, so solver_update itself cannot fail. */
+ * any state changes in a step, so solver_step itself cannot fail. */
 int solver_reserve (struct carom_world *world);
-void solver_update (struct carom_world *world, const step_context *ctx);
+/* One update: the sub-steps over the contacts found at its start. */
+void solver_step (struct carom_world *world, const step_context *ctx);
 void solver_destroy (struct carom_world *world);
 
 #endif

@@ -2,12 +2,26 @@
 
 #include "world.h"
 
-void step_context_init (step_context *ctx, const carom_world *world, double h)
+/* Below this multiple of what gravity adds in a step, an approach does not
+ * bounce: a body resting under gravity meets its support at about one
+ * step's gravity each step, and must stay resting. */
+#define RESTITUTION_THRESHOLD_STEPS 2.0
+
+void step_context_init (step_context *ctx, const carom_world *world, double dt)
 {
-  ctx->h = h;
-  ctx->inv_h = h > 0.0 ? 1.0 / h : 0.0;
+  ctx->dt = dt;
+  ctx->inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
+  ctx->substeps = world->def.substeps;
+  ctx->iterations = world->def.iterations;
+  ctx->h = dt / ctx->substeps;
+  ctx->inv_h = ctx->h > 0.0 ? 1.0 / ctx->h : 0.0;
   ctx->gravity = world->gravity;
-  ctx->kick = v2_scale (world->gravity, h);
+  ctx->kick = v2_scale (world->gravity, ctx->h);
   ctx->accel = v2_len (world->gravity);
   ctx->continuous = world->continuous;
+  ctx->damping = world->damping_linear > 0.0 || world->damping_angular > 0.0;
+  ctx->damp_v = ctx->damping ? exp (-world->damping_linear * ctx->h) : 1.0;
+  ctx->damp_w = ctx->damping ? exp (-world->damping_angular * ctx->h) : 1.0;
+  ctx->restitution_threshold = RESTITUTION_THRESHOLD_STEPS * ctx->accel * dt;
+  ctx->push_rate = world->def.position_correction * ctx->inv_h;
 }

@@ -1,25 +1,36 @@
-/* The step context: what every stage of a sub-step needs to know about it,
- * computed once by the world's update and handed to each stage (detection,
- * gravity, damping, the solver, the drift, sleep). Nothing of it is kept in
- * the world between sub-steps. */
+/* The step context: what every stage of one carom_world_update needs to
+ * know about the step, computed once and handed to each stage (detection,
+ * the solver's sub-steps, gravity, damping, sleep). Nothing of it is kept in
+ * the world between steps. */
 #ifndef CAROM_STEP_H
 #define CAROM_STEP_H
+
+#include <stdint.h>
 
 #include "vec2.h"
 
 typedef struct step_context {
-  double h, inv_h;  /* the sub-step; 0 for detection outside any update */
-  vec2 gravity;     /* uniform gravity */
-  vec2 kick;        /* gravity * h: the velocity a sub-step's gravity adds */
-  double accel;     /* |gravity|: how far bodies can fall within h (reach) */
-  int continuous;   /* the world's continuous collision: contacts are looked
-                       for as far as bodies can travel in h */
+  double dt, inv_dt;     /* the whole update; detection looks this far ahead */
+  double h, inv_h;       /* one sub-step */
+  int32_t substeps, iterations;
+  vec2 gravity;          /* uniform gravity */
+  vec2 kick;             /* gravity * h: the velocity a sub-step's gravity adds */
+  double accel;          /* |gravity|: how far bodies can fall within dt (reach) */
+  int continuous;        /* the world's continuous collision: contacts are
+                            looked for as far as bodies can travel in dt */
+  int damping;           /* damping is on: v *= damp_v, w *= damp_w per sub-step */
+  double damp_v, damp_w;
+  /* contacts: below this approach speed a contact does not bounce (what
+   * gravity adds in two steps, so resting stays resting; 0 without
+   * gravity, where every approach bounces) */
+  double restitution_threshold;
+  double push_rate;      /* overlap pushed out per unit time: position_correction / h */
 } step_context;
 
 struct carom_world;
 
-/* The context of a sub-step of length h (h = 0: detection alone, with no
- * look-ahead). */
-void step_context_init (step_context *ctx, const struct carom_world *world, double h);
+/* The context of an update of dt (dt = 0: detection alone, outside any
+ * update, with no look-ahead). */
+void step_context_init (step_context *ctx, const struct carom_world *world, double dt);
 
 #endif

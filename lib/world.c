@@ -1,14 +1,10 @@
-/* The world and its update pipeline, in the flying-balls lifecycle:
- * init, update (per sub-step: detect, wake, gravity, damping, solve, drift,
- * sleep),
- * destroy. */
+/* The world and its update pipeline, in the flying-balls lifecycle: init,
+ * update (detect, wake, the solver's sub-steps, sleep), destroy. */
 #include "world.h"
 
 #include <string.h>
 
-#include "damping.h"
 #include "def.h"
-#include "gravity.h"
 #include "sleep.h"
 #include "solver.h"
 #include "step.h"
@@ -70,33 +66,6 @@ void carom_world_destroy (carom_world *world)
   mem_free (&a, world, sizeof *world);
 }
 
-/* Move every dynamic body with its velocity plus the position-correction
- * pseudo-velocity, which is then dropped. A free body moves with the mean of
- * its velocities before and after the gravity kick, x += (v - g h / 2) h,
- * which is exact for uniform gravity (x0 + v0 t + g t^2 / 2 at every step);
- * a body in contact moves with the velocity the solver left it (symplectic
- * Euler), so a body at rest stays exactly at rest with zero velocity. */
-static void drift (carom_world *world, const step_context *ctx)
-{
-  double h = ctx->h;
-  vec2 half_kick = v2_scale (ctx->kick, 0.5);
-  int32_t i;
-  for (i = 0; i < world->slot_count; ++i)
-    {
-      body *b = &world->bodies[i];
-      vec2 v;
-      if (!b->alive || b->type == CAROM_STATIC || b->asleep)
-        continue;
-      v = b->touching ? b->v : v2_sub (b->v, half_kick);
-      b->p = v2_mad (b->p, h, v2_add (v, b->pv));
-      b->angle += h * (b->w + b->pw);
-      b->pv = v2 (0.0, 0.0);
-      b->pw = 0.0;
-      b->touching = 0;
-      body_sync (b);
-    }
-}
-
 #ifdef CAROM_DEBUG_CHECKS
 #include <stdio.h>
 #include <stdlib.h>
@@ -121,11 +90,17 @@ static void check_finite (const carom_world *world)
 #define check_finite(world) ((void) 0)
 #endif
 
-static carom_status substep (carom_world *world, double h)
+carom_status carom_world_update (carom_world *world, double dt)
 {
   step_context ctx;
   carom_status st;
-  step_context_init (&ctx, world, h);
+  if (!world)
+    return CAROM_ERR_NULL_ARGUMENT;
+  /* 1e-100 to 1e100: divided by, and multiplied into velocities, it must
+   * keep the solver's numbers within doubles */
+  if (!is_finite (dt) || !(dt >= 1e-100) || dt > MAX_MAGNITUDE)
+    return CAROM_ERR_BAD_TIME_STEP;
+  step_context_init (&ctx, world, dt);
   st = contacts_update (world, &ctx);
   if (st != CAROM_OK)
     return st;
@@ -135,32 +110,9 @@ static carom_status substep (carom_world *world, double h)
       return CAROM_ERR_OUT_OF_MEMORY;
     }
   sleep_wake_touched (world);
-  gravity_update (world, &ctx);
-  damping_update (world, &ctx);
-  solver_update (world, &ctx);
-  drift (world, &ctx);
+  solver_step (world, &ctx);
   sleep_update (world, &ctx);
   check_finite (world);
-  return CAROM_OK;
-}
-
-carom_status carom_world_update (carom_world *world, double dt)
-{
-  int32_t k;
-  double h;
-  if (!world)
-    return CAROM_ERR_NULL_ARGUMENT;
-  /* 1e-100 to 1e100: divided by, and multiplied into velocities, it must
-   * keep the solver's numbers within doubles */
-  if (!is_finite (dt) || !(dt >= 1e-100) || dt > MAX_MAGNITUDE)
-    return CAROM_ERR_BAD_TIME_STEP;
-  h = dt / world->def.substeps;
-  for (k = 0; k < world->def.substeps; ++k)
-    {
-      carom_status st = substep (world, h);
-      if (st != CAROM_OK)
-        return st;
-    }
   return CAROM_OK;
 }
 

@@ -22,8 +22,11 @@ struct carom_world {
   contacts contacts;
   struct solver_body *solver_bodies; /* one per slot (solver.c) */
   int32_t solver_cap;
-  int32_t *solver_scratch;           /* levels and orders (solver.c) */
+  int32_t *solver_scratch;           /* shock propagation's levels and order */
   int32_t scratch_cap;
+  int32_t shock_count;               /* contacts it orders this step */
+  int32_t *restitution_list;         /* the struck contacts of a step */
+  int32_t restitution_cap;
 
   /* effects beyond uniform gravity, each off until set (effects.c) */
   struct {

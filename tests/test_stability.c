@@ -176,8 +176,9 @@ static void test_bullet_300_never_passes_thin_wall (void **state)
 }
 
 /* Case 11: overlapping at creation, they separate without exploding.
- * Bound: kinetic energy stays 0 (split impulses move, never push) and the
- * boxes end apart. */
+ * Bound: kinetic energy stays at rounding level (the push-out moves the
+ * bodies and the relax pass takes its velocity back: a push left behind at
+ * even 1e-9 of the push speed would show) and the boxes end apart. */
 static void test_overlap_recovery_adds_no_energy (void **state)
 {
   carom_world *w = world_with (0, 0, 0, 0);
@@ -193,7 +194,7 @@ static void test_overlap_recovery_adds_no_energy (void **state)
   assert_status (carom_world_add_box (w, &d, 1, 1, &b), CAROM_OK);
   for (step = 0; step < 300; ++step)
     carom_world_update (w, 1.0 / 60);
-  assert_true (world_kinetic_energy (w) == 0.0);
+  assert_true (world_kinetic_energy (w) < 1e-24);
   carom_body_get_position (w, a, &xa, NULL);
   carom_body_get_position (w, b, &xb, NULL);
   assert_true (xb - xa > 0.95);

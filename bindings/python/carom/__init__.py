@@ -136,8 +136,8 @@ def _pair(value, what):
     return _finite(x, what), _finite(y, what)
 
 
-def _world_def(gravity=(0.0, 0.0), restitution=0.0, friction=0.0, substeps=1,
-               iterations=8, position_correction=0.2, slop=0.01,
+def _world_def(gravity=(0.0, 0.0), restitution=0.0, friction=0.0, substeps=4,
+               iterations=1, position_correction=0.2, slop=0.01,
                narrow_phase=NarrowPhase.SAT):
     d = _native.new_def(_native.WorldDef)
     d.gravity_x, d.gravity_y = _pair(gravity, "gravity")
@@ -166,7 +166,7 @@ bodies are apart but within the contact margin)."""
 class World:
     """A simulation world (carom_world).
 
-    World(gravity=(0, 0), restitution=0, friction=0, substeps=1, iterations=8,
+    World(gravity=(0, 0), restitution=0, friction=0, substeps=4, iterations=1,
           position_correction=0.2, slop=0.01, narrow_phase="sat")
 
     Use it as a context manager, or call close(); a world that is garbage

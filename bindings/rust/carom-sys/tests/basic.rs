@@ -19,7 +19,8 @@ fn version_and_struct_sizes_match_the_library() {
     };
     assert_eq!(st, CAROM_ERR_BAD_STRUCT_SIZE);
     assert_eq!(safe::body_def().density, 1.0);
-    assert_eq!(safe::world_def().iterations, 8);
+    assert_eq!(safe::world_def().iterations, 1);
+    assert_eq!(safe::world_def().substeps, 4);
 }
 
 #[test]

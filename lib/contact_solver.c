@@ -1,0 +1,491 @@
+/* The contact constraint.
+ *
+ * For one contact point the impulse is the thesis' eq. 3.23 with its two
+ * slips corrected (docs/physics.md): the relative velocity is that of the
+ * contact points, v_p = v_bp - v_ap (v_ap alone in the thesis), and both
+ * bodies' angular terms add with the same sign (eq. 3.17 flips the B term):
+ *
+ *   j = -(1 + e) v_p . n / (1/m_a + 1/m_b + (r_ap x n)^2 / I_a + (r_bp x n)^2 / I_b)
+ *
+ * Here n points from A to B and B receives +j n, A receives -j n (the
+ * thesis' n points the other way; the formula is the same).
+ *
+ * Within a step the constraint is solved in two parts. In every sub-step
+ * the impulses keep the points from approaching (eq. 3.23 with e = 0),
+ * accumulated and clamped so contacts only push: a solve pass that also
+ * pushes overlap beyond the slop out (a fraction position_correction of it
+ * per sub-step), the motion, then a relax pass without the push, which
+ * takes the push's velocity back, so position correction moves the bodies
+ * but adds no kinetic energy (Catto's "soft step" with relax iterations).
+ * After the last sub-step, every point that was struck leaves at e times
+ * the normal speed it met with (eq. 3.18): for an isolated contact the whole
+ * step then applies exactly the impulse of eq. 3.23.
+ *
+ * The lever arms r_ap, r_bp and the normal are those of the detection at
+ * the start of the step; the separation is followed through the sub-steps
+ * from the bodies' motion since then, so no geometry is recomputed. */
+#include "contact_solver.h"
+
+#include "world.h"
+
+/* Overlap is pushed out at most this fraction of the smaller body's radius
+ * (its bounding circle's) per step, so a deep overlap resolves over several
+ * steps instead of launching the bodies. The radius, not the thickness: a
+ * sliver that lands deep in the ground must still come out in a few steps. */
+#define CONTACT_PUSH_PER_STEP 0.05
+
+/* Two points (a face on a face) are solved together, exactly, when their
+ * 2x2 matrix is this well conditioned: one at a time, each push would tip
+ * the body and the next undo it only in part, and a perfectly aligned stack
+ * would sway. */
+#define BLOCK_MAX_CONDITION 1e4
+
+/* The restitution solve iterates over the struck contacts until no point's
+ * normal speed changes by more than this fraction of the fastest approach
+ * (bodies struck on several sides at once, a cluster or a row, reach every
+ * point's target together only as the passes converge), and at most this
+ * many passes. */
+#define RESTITUTION_TOLERANCE 1e-10
+#define RESTITUTION_MAX_ITERATIONS 100
+
+static double effective_mass (const solver_body *a, const solver_body *b, double ra_d, double rb_d)
+{
+  double k = a->im + b->im + a->ii * ra_d * ra_d + b->ii * rb_d * rb_d;
+  /* a non-finite k (a body far smaller than the rounding of its
+   * coordinates) leaves the point inert rather than poisoning the world */
+  return k > 0.0 && isfinite (k) ? 1.0 / k : 0.0;
+}
+
+/* The effective masses of a point, eq. 3.23's denominator along the normal
+ * and the tangent. An inert direction also loses its lever arms and its
+ * impulse: ii * (r x d) may itself overflow there, and inf * 0 in a push is
+ * NaN. */
+static void point_masses (contact_point *p, const solver_body *a, const solver_body *b)
+{
+  p->normal_mass = effective_mass (a, b, p->rn_a, p->rn_b);
+  p->tangent_mass = effective_mass (a, b, p->rt_a, p->rt_b);
+  if (p->normal_mass == 0.0)
+    p->rn_a = p->rn_b = p->normal_impulse = 0.0;
+  if (p->tangent_mass == 0.0)
+    p->rt_a = p->rt_b = p->tangent_impulse = 0.0;
+}
+
+/* Lever arms of a contact point. A lever arm cannot be longer than the body
+ * reaches (rounding of far-apart coordinates can make it so for a tiny
+ * body); a circle's normal impulse passes through its centre, so r x n is
+ * exactly 0 there whatever the rounding of the point says. */
+static void lever_arms (contact_point *p, const body *ba, const body *bb, vec2 ra, vec2 rb)
+{
+  vec2 t = v2_perp (p->normal);
+  double la = 2.0 * ba->shape.bound_radius + fabs (p->depth), lb = 2.0 * bb->shape.bound_radius + fabs (p->depth);
+  double na = v2_len (ra), nb = v2_len (rb);
+  if (na > la)
+    ra = v2_scale (ra, la / na);
+  if (nb > lb)
+    rb = v2_scale (rb, lb / nb);
+  p->ra = ra;
+  p->rb = rb;
+  p->rn_a = ba->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (ra, p->normal);
+  p->rn_b = bb->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (rb, p->normal);
+  p->rt_a = v2_cross (ra, t);
+  p->rt_b = v2_cross (rb, t);
+  p->adjusted = -p->depth - v2_dot (v2_sub (rb, ra), p->normal);
+}
+
+/* A point still apart and closing meets the other body a time t = gap /
+ * speed into the step: its lever arms are those of that moment, both
+ * reaching the point where the bodies meet (moved with them), so the impulse
+ * turns the bodies as the impact does. */
+static void lever_arms_at_impact (contact_point *p, const body *ba, const body *bb, const solver_body *a,
+                                  const solver_body *b, double toi)
+{
+  vec2 meet = v2_mad (p->point, 0.5 * toi, v2_add (a->v, b->v));
+  lever_arms (p, ba, bb, v2_sub (meet, v2_mad (ba->p, toi, a->v)), v2_sub (meet, v2_mad (bb->p, toi, b->v)));
+}
+
+/* A warm-start impulse changes the velocities by impulse / mass. If the
+ * effective mass fell since last step (a lever arm that grew, as across a
+ * long speculative gap), last step's impulse would now give a larger change
+ * than it ever did: it is scaled down to give the same one. Otherwise a tiny
+ * body whose arm grew a thousandfold would be spun a millionfold faster at
+ * once, and then overflow. */
+static void rescale_warm_start (contact_point *p, double old_nm, double old_tm)
+{
+  if (p->normal_mass < old_nm)
+    p->normal_impulse *= p->normal_mass / old_nm;
+  if (p->tangent_mass < old_tm)
+    p->tangent_impulse *= p->tangent_mass / old_tm;
+}
+
+/* The 2x2 matrix of a two-point contact: eq. 3.23's denominators and their
+ * coupling (on one face the normals agree; the vertex-edge method may give
+ * two points with their own normals, coupled by n1 . n2). */
+static void pair_matrix (contact *k, const solver_body *a, const solver_body *b)
+{
+  const contact_point *p1 = &k->points[0], *p2 = &k->points[1];
+  double im = a->im + b->im;
+  k->block = 0;
+  if (k->count != 2)
+    return;
+  k->k11 = im + a->ii * p1->rn_a * p1->rn_a + b->ii * p1->rn_b * p1->rn_b;
+  k->k22 = im + a->ii * p2->rn_a * p2->rn_a + b->ii * p2->rn_b * p2->rn_b;
+  k->k12 = im * v2_dot (p1->normal, p2->normal) + a->ii * p1->rn_a * p2->rn_a + b->ii * p1->rn_b * p2->rn_b;
+  k->block = p1->normal_mass > 0.0 && p2->normal_mass > 0.0
+             && k->k11 * k->k11 < BLOCK_MAX_CONDITION * (k->k11 * k->k22 - k->k12 * k->k12);
+}
+
+void contact_prepare (carom_world *world, const step_context *ctx)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  int32_t i, j;
+  for (i = 0; i < c->count; ++i)
+    {
+      contact *k = &c->list[i];
+      const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
+      solver_body *a = &sb[k->a], *b = &sb[k->b];
+      double reach = ba->shape.bound_radius < bb->shape.bound_radius ? ba->shape.bound_radius : bb->shape.bound_radius;
+      a->constrained = b->constrained = 1;
+      k->max_push = CONTACT_PUSH_PER_STEP * reach * ctx->inv_dt;
+      k->met = 0;
+      for (j = 0; j < k->count; ++j)
+        {
+          contact_point *p = &k->points[j];
+          double old_nm = p->normal_mass, old_tm = p->tangent_mass, vn;
+          lever_arms (p, ba, bb, v2_sub (p->point, ba->p), v2_sub (p->point, bb->p));
+          point_masses (p, a, b);
+          vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
+          p->toi = -1.0;
+          if (p->depth < 0.0 && vn < 0.0)
+            {
+              p->toi = p->depth / vn < ctx->dt ? p->depth / vn : ctx->dt;
+              lever_arms_at_impact (p, ba, bb, a, b, p->toi);
+              point_masses (p, a, b);
+            }
+          rescale_warm_start (p, old_nm, old_tm);
+          if (k->friction == 0.0)
+            p->tangent_impulse = 0.0;
+          /* before any impulse of the step (see contact_solve) */
+          p->approach = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
+          p->total_impulse = p->normal_moment = 0.0;
+          p->tangent_total = p->tangent_moment = 0.0;
+        }
+      pair_matrix (k, a, b);
+    }
+}
+
+/* A normal impulse applied at a point, `remaining` before the end of the
+ * step: with every other, it adds up to what the contact gave over the whole
+ * step, and to how far that moved the bodies by the end of it (the moment,
+ * see contact_time_of_impact). */
+static inline void apply_normal (solver_body *a, solver_body *b, contact_point *p, double lambda, double remaining)
+{
+  contact_push (a, b, p->normal, p->rn_a, p->rn_b, lambda);
+  p->total_impulse += lambda;
+  p->normal_moment += lambda * remaining;
+}
+
+/* The same along the tangent (friction). */
+static inline void apply_tangent (solver_body *a, solver_body *b, contact_point *p, double lambda, double remaining)
+{
+  contact_push (a, b, v2_perp (p->normal), p->rt_a, p->rt_b, lambda);
+  p->tangent_total += lambda;
+  p->tangent_moment += lambda * remaining;
+}
+
+void contact_warm_start (carom_world *world, double remaining)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  int32_t i, j;
+  for (i = 0; i < c->count; ++i)
+    {
+      contact *k = &c->list[i];
+      solver_body *a = &sb[k->a], *b = &sb[k->b];
+      for (j = 0; j < k->count; ++j)
+        {
+          contact_point *p = &k->points[j];
+          if (p->normal_impulse != 0.0)
+            apply_normal (a, b, p, p->normal_impulse, remaining);
+          if (p->tangent_impulse != 0.0)
+            apply_tangent (a, b, p, p->tangent_impulse, remaining);
+        }
+    }
+}
+
+/* The normal speed a point's impulse aims at in this pass, as -bias: a
+ * speculative point (apart by s) may close its gap within the sub-step but
+ * not pass it; an overlap beyond the slop is pushed out, a fraction
+ * position_correction of it per sub-step, no faster than max_push; within
+ * the slop, and in the relax pass, the point may not approach. */
+static double point_bias (const contact *k, const contact_point *p, const solver_body *a, const solver_body *b,
+                          const step_context *ctx, int use_bias)
+{
+  double s = contact_separation (a, b, p), bias;
+  if (s > 0.0)
+    return s * ctx->inv_h;
+  if (!use_bias || s + k->slop >= 0.0)
+    return 0.0;
+  bias = ctx->push_rate * (s + k->slop);
+  return bias < -k->max_push ? -k->max_push : bias;
+}
+
+static void solve_point (solver_body *a, solver_body *b, contact_point *p, double bias, double remaining)
+{
+  double vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
+  double acc = p->normal_impulse - p->normal_mass * (vn + bias);
+  if (acc < 0.0)
+    acc = 0.0;
+  apply_normal (a, b, p, acc - p->normal_impulse, remaining);
+  p->normal_impulse = acc;
+}
+
+int contact_lcp2 (double k11, double k12, double k22, double b1, double b2, double *x1, double *x2)
+{
+  double det = k11 * k22 - k12 * k12;
+  if (det > 1e-12 * k11 * k22)
+    {
+      *x1 = (-k22 * b1 + k12 * b2) / det;
+      *x2 = (k12 * b1 - k11 * b2) / det;
+      if (*x1 >= 0.0 && *x2 >= 0.0)
+        return 1;
+    }
+  *x1 = -b1 / k11, *x2 = 0.0;
+  if (*x1 >= 0.0 && k12 * *x1 + b2 >= 0.0)
+    return 1;
+  *x1 = 0.0, *x2 = -b2 / k22;
+  if (*x2 >= 0.0 && k12 * *x2 + b1 >= 0.0)
+    return 1;
+  *x1 = *x2 = 0.0;
+  return b1 >= 0.0 && b2 >= 0.0;
+}
+
+/* Both points of a block at once: the accumulated impulses x >= 0 with
+ * K x + (vn + bias - K x_now) >= 0, complementary. Returns 0 when rounding
+ * leaves no consistent case (the caller solves the points one at a time). */
+static int solve_block (solver_body *a, solver_body *b, contact *k, const double *bias, double remaining)
+{
+  contact_point *p1 = &k->points[0], *p2 = &k->points[1];
+  double x1 = p1->normal_impulse, x2 = p2->normal_impulse, y1, y2;
+  double b1 = contact_speed (a, b, p1->normal, p1->rn_a, p1->rn_b) + bias[0] - (k->k11 * x1 + k->k12 * x2);
+  double b2 = contact_speed (a, b, p2->normal, p2->rn_a, p2->rn_b) + bias[1] - (k->k12 * x1 + k->k22 * x2);
+  if (!contact_lcp2 (k->k11, k->k12, k->k22, b1, b2, &y1, &y2))
+    return 0;
+  apply_normal (a, b, p1, y1 - x1, remaining);
+  apply_normal (a, b, p2, y2 - x2, remaining);
+  p1->normal_impulse = y1;
+  p2->normal_impulse = y2;
+  return 1;
+}
+
+/* The first pass in which a contact pushes is when its bodies met. What
+ * restitution reverses is the normal speed they met with, taken for every
+ * point of every contact on the velocities before any contact impulse of
+ * the step (prepare) plus what gravity added until then: measured on one
+ * common state, so that for e = 1 the impulses of all the contacts together
+ * change no energy, and with the gravity that fell before the impact but
+ * none after (exact bounce heights). A point that already touched or
+ * overlapped when the step began met the other body before it: none of this
+ * step's gravity is part of its approach. */
+static void note_meeting (contact *k, const solver_body *a, const solver_body *b, const step_context *ctx,
+                          int32_t kicks)
+{
+  vec2 ka = a->moves ? ctx->kick : v2 (0.0, 0.0), kb = b->moves ? ctx->kick : v2 (0.0, 0.0);
+  vec2 fell = v2_scale (v2_sub (kb, ka), (double) kicks);
+  int32_t j;
+  for (j = 0; j < k->count; ++j)
+    k->met |= k->points[j].normal_impulse > 0.0;
+  if (k->met)
+    for (j = 0; j < k->count; ++j)
+      if (k->points[j].depth < 0.0)
+        k->points[j].approach += v2_dot (fell, k->points[j].normal);
+}
+
+/* Coulomb friction: the tangent impulse stays within mu times the normal
+ * impulse. */
+static void solve_friction (solver_body *a, solver_body *b, contact *k, double remaining)
+{
+  int32_t j;
+  for (j = 0; j < k->count; ++j)
+    {
+      contact_point *p = &k->points[j];
+      vec2 t;
+      double vt, limit, acc;
+      /* no normal impulse: the limit is 0, so a tangent impulse of 0 stays 0 */
+      if (p->normal_impulse == 0.0 && p->tangent_impulse == 0.0)
+        continue;
+      t = v2_perp (p->normal);
+      vt = contact_speed (a, b, t, p->rt_a, p->rt_b);
+      limit = k->friction * p->normal_impulse;
+      acc = p->tangent_impulse - p->tangent_mass * vt;
+      acc = acc > limit ? limit : (acc < -limit ? -limit : acc);
+      apply_tangent (a, b, p, acc - p->tangent_impulse, remaining);
+      p->tangent_impulse = acc;
+    }
+}
+
+void contact_solve (carom_world *world, const step_context *ctx, int32_t kicks, int use_bias, double remaining)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  int32_t i, j;
+  for (i = 0; i < c->count; ++i)
+    {
+      contact *k = &c->list[i];
+      solver_body *a = &sb[k->a], *b = &sb[k->b];
+      double bias[MANIFOLD_MAX_POINTS];
+      for (j = 0; j < k->count; ++j)
+        bias[j] = point_bias (k, &k->points[j], a, b, ctx, use_bias);
+      if (!(k->block && solve_block (a, b, k, bias, remaining)))
+        for (j = 0; j < k->count; ++j)
+          solve_point (a, b, &k->points[j], bias[j], remaining);
+      if (!k->met)
+        note_meeting (k, a, b, ctx, kicks);
+      if (k->friction > 0.0)
+        solve_friction (a, b, k, remaining);
+    }
+}
+
+/* Whether a point takes part in restitution: some impulse of the step acted
+ * on it, and it met the other body faster than the threshold, or was
+ * leaving it faster than that and was pushed back by impacts elsewhere (a
+ * row or a cluster struck at once). Either way its target is eq. 3.18: it
+ * may end no slower than e times its normal speed before the step,
+ * reversed. At every point that carries impulse, that is what keeps an
+ * elastic cluster's energy: the impulses then change it by
+ * sum_i j_i (v_i,before + v_i,after) / 2 = 0. */
+static int struck (const contact_point *p, double threshold)
+{
+  return p->total_impulse > 0.0 && (p->approach < -threshold || p->approach > threshold);
+}
+
+/* The restitution problem of a two-point contact, exactly: the totals of
+ * the step's impulses x >= 0 with K x + b >= 0, complementary, where b is
+ * the error from the targets with the current totals taken back out. */
+static int restitution_pair (solver_body *a, solver_body *b, contact *k)
+{
+  contact_point *p1 = &k->points[0], *p2 = &k->points[1];
+  double x1, x2;
+  double b1 = contact_speed (a, b, p1->normal, p1->rn_a, p1->rn_b) + k->restitution * p1->approach
+              - (k->k11 * p1->total_impulse + k->k12 * p2->total_impulse);
+  double b2 = contact_speed (a, b, p2->normal, p2->rn_a, p2->rn_b) + k->restitution * p2->approach
+              - (k->k12 * p1->total_impulse + k->k22 * p2->total_impulse);
+  if (!k->block || !contact_lcp2 (k->k11, k->k12, k->k22, b1, b2, &x1, &x2))
+    return 0;
+  apply_normal (a, b, p1, x1 - p1->total_impulse, 0.0);
+  apply_normal (a, b, p2, x2 - p2->total_impulse, 0.0);
+  return 1;
+}
+
+/* One restitution pass over contact k; returns the largest change of a
+ * point's normal speed it made. The impulses it adds count towards the
+ * step's totals, never towards what the contact carries to the next step
+ * (normal_impulse): the bounce is an event of this step, and warm starting
+ * it again would push bodies that already fly apart. */
+static double restitution_pass (solver_body *a, solver_body *b, contact *k, double threshold)
+{
+  double most = 0.0;
+  int32_t j;
+  if (k->count == 2 && struck (&k->points[0], threshold) && struck (&k->points[1], threshold))
+    {
+      double t1 = k->points[0].total_impulse, t2 = k->points[1].total_impulse;
+      if (restitution_pair (a, b, k))
+        {
+          double d1 = k->points[0].total_impulse - t1, d2 = k->points[1].total_impulse - t2;
+          double v1 = fabs (k->k11 * d1 + k->k12 * d2), v2 = fabs (k->k12 * d1 + k->k22 * d2);
+          return v1 > v2 ? v1 : v2;
+        }
+    }
+  for (j = 0; j < k->count; ++j)
+    {
+      contact_point *p = &k->points[j];
+      double vn, acc, d;
+      if (!struck (p, threshold))
+        continue;
+      vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
+      acc = p->total_impulse - p->normal_mass * (vn + k->restitution * p->approach);
+      if (acc < 0.0)
+        acc = 0.0;
+      d = p->normal_mass > 0.0 ? fabs (acc - p->total_impulse) / p->normal_mass : 0.0;
+      most = d > most ? d : most;
+      apply_normal (a, b, p, acc - p->total_impulse, 0.0);
+    }
+  return most;
+}
+
+void contact_restitution (carom_world *world, const step_context *ctx)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  int32_t *list = world->restitution_list;
+  double threshold = ctx->restitution_threshold, fastest = 0.0;
+  int32_t i, j, it, n = 0;
+  for (i = 0; i < c->count; ++i)
+    {
+      const contact *k = &c->list[i];
+      int any = 0;
+      if (k->restitution == 0.0)
+        continue;
+      for (j = 0; j < k->count; ++j)
+        if (struck (&k->points[j], threshold))
+          {
+            any = 1;
+            fastest = fabs (k->points[j].approach) > fastest ? fabs (k->points[j].approach) : fastest;
+          }
+      if (any)
+        list[n++] = i;
+    }
+  for (it = 0; it < RESTITUTION_MAX_ITERATIONS && n > 0; ++it)
+    {
+      double most = 0.0;
+      for (i = 0; i < n; ++i)
+        {
+          contact *k = &c->list[list[i]];
+          double d = restitution_pass (&sb[k->a], &sb[k->b], k, threshold);
+          most = d > most ? d : most;
+        }
+      if (most <= RESTITUTION_TOLERANCE * fastest)
+        break;
+    }
+}
+
+/* An impact met within the step (a point apart at detection and struck,
+ * faster than resting contact ever approaches) happened at one moment, toi, with lever arms of that moment: its
+ * total impulse P changes the velocities then, and moves the bodies by
+ * P (dt - toi) / m by the end of the step. The sub-steps applied it in parts
+ * at other moments (the approach stopped at the sub-step of meeting, the
+ * bounce at the end), and moved the bodies by their moment, the sum of
+ * lambda (dt - t) over the parts, instead. The difference is made up here,
+ * on the positions alone: the bodies end where the exact event leaves
+ * them, with the velocities it leaves them (no energy changes), and the
+ * impulse then conserves angular momentum about any point, as the event
+ * does. Only bouncy contacts need it: without restitution the speculative
+ * solve already stops the approach exactly where the bodies meet. */
+void contact_time_of_impact (carom_world *world, const step_context *ctx)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  int32_t i, j;
+  for (i = 0; i < c->count; ++i)
+    {
+      contact *k = &c->list[i];
+      solver_body *a = &sb[k->a], *b = &sb[k->b];
+      if (k->restitution == 0.0)
+        continue; /* the approach stopped at the meeting: already exact */
+      for (j = 0; j < k->count; ++j)
+        {
+          const contact_point *p = &k->points[j];
+          double late = ctx->dt - p->toi, dn, dt_;
+          vec2 t;
+          if (p->toi < 0.0 || !struck (p, ctx->restitution_threshold))
+            continue;
+          dn = p->total_impulse * late - p->normal_moment;
+          dt_ = p->tangent_total * late - p->tangent_moment;
+          t = v2_perp (p->normal);
+          a->dp = v2_sub (a->dp, v2_add (v2_scale (p->normal, a->im * dn), v2_scale (t, a->im * dt_)));
+          a->da -= a->ii * (p->rn_a * dn + p->rt_a * dt_);
+          b->dp = v2_add (b->dp, v2_add (v2_scale (p->normal, b->im * dn), v2_scale (t, b->im * dt_)));
+          b->da += b->ii * (p->rn_b * dn + p->rt_b * dt_);
+        }
+    }
+}

@@ -1,0 +1,71 @@
+/* The contact constraint (eq. 3.18-3.23, with the corrections of
+ * docs/physics.md): its set-up once per step, and the passes the solver's
+ * sub-steps make over it. */
+#ifndef CAROM_CONTACT_SOLVER_H
+#define CAROM_CONTACT_SOLVER_H
+
+#include "contact.h"
+#include "solver.h"
+#include "step.h"
+
+struct carom_world;
+
+/* Lever arms, effective masses and the separation to follow, from the
+ * contacts detected at the start of the step. */
+void contact_prepare (struct carom_world *world, const step_context *ctx);
+/* Apply the impulses the contacts carry again (warm starting). `remaining`
+ * (in this and the passes below) is the time from the impulses to the end
+ * of the step. */
+void contact_warm_start (struct carom_world *world, double remaining);
+/* One pass over every contact: with use_bias, overlap beyond the slop is
+ * pushed out; without (relax), only approach is removed, which takes the
+ * push's velocity back. `kicks` is how many gravity kicks the sub-steps have
+ * given so far. */
+void contact_solve (struct carom_world *world, const step_context *ctx, int32_t kicks, int use_bias,
+                    double remaining);
+/* After the sub-steps: points that were struck leave at e times the speed
+ * they met with (eq. 3.18). */
+void contact_restitution (struct carom_world *world, const step_context *ctx);
+/* Then: the bodies of impacts met within the step are moved to where the
+ * impact at its time of impact leaves them. */
+void contact_time_of_impact (struct carom_world *world, const step_context *ctx);
+
+/* Shock propagation (shock.c): when touching bodies differ in mass more
+ * than tenfold under gravity, a pass from the ground up after the solve and
+ * the relax of each sub-step, holding each lower body still. */
+void contact_shock_prepare (struct carom_world *world, const step_context *ctx);
+void contact_shock (struct carom_world *world, const step_context *ctx);
+
+/* ------------------------------------------- shared by the contact passes */
+
+/* An impulse lambda along a direction d applied at the point: B gets
+ * +lambda d, A gets -lambda d; ra_d = ra x d and rb_d = rb x d. */
+static inline void contact_push (solver_body *a, solver_body *b, vec2 d, double ra_d, double rb_d, double lambda)
+{
+  a->v = v2_mad (a->v, -a->im * lambda, d);
+  a->w -= a->ii * ra_d * lambda;
+  b->v = v2_mad (b->v, b->im * lambda, d);
+  b->w += b->ii * rb_d * lambda;
+}
+
+/* (v_bp - v_ap) . d, eq. 3.15 and the corrected 3.17, using
+ * (w x r) . d = w (r x d) */
+static inline double contact_speed (const solver_body *a, const solver_body *b, vec2 d, double ra_d, double rb_d)
+{
+  return v2_dot (v2_sub (b->v, a->v), d) + b->w * rb_d - a->w * ra_d;
+}
+
+/* The separation of a point now: at detection, plus how far the bodies'
+ * copies of the point have moved apart along the normal since. */
+static inline double contact_separation (const solver_body *a, const solver_body *b, const contact_point *p)
+{
+  vec2 d = v2_add (v2_sub (b->dp, a->dp), v2_sub (rot2_apply (b->dq, p->rb), rot2_apply (a->dq, p->ra)));
+  return v2_dot (d, p->normal) + p->adjusted;
+}
+
+/* Smallest x >= 0 with w = K x + b >= 0 and x . w = 0 for a symmetric 2x2 K
+ * (both points active, the first, the second, neither). Returns 0 when
+ * rounding leaves no consistent case. */
+int contact_lcp2 (double k11, double k12, double k22, double b1, double b2, double *x1, double *x2);
+
+#endif
