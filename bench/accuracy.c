@@ -285,7 +285,7 @@ static void preset (sweep *w, const char *only, const char *name, int substeps, 
 
 int main (int argc, char **argv)
 {
-  static const double substeps[] = { 1, 2, 4, 8 }, iterations[] = { 2, 4, 8, 16, 32 },
+  static const double substeps[] = { 1, 2, 4, 8, 16 }, iterations[] = { 1, 2, 4, 8 },
                       correction[] = { 0.05, 0.1, 0.2, 0.4, 0.8 }, slop[] = { 0.001, 0.005, 0.01, 0.02 },
                       narrow[] = { 0, 1 }, continuous[] = { 0, 1 }, rate[] = { 30, 60, 120, 240 };
   const char *only = NULL;
@@ -341,15 +341,15 @@ int main (int argc, char **argv)
 
   fprintf (stderr, "accuracy: defaults\n");
   run_setting (&w, &w.def, w.def_results);
-  knob (&w, only, K_SUBSTEPS, "substeps", substeps, 4);
-  knob (&w, only, K_ITERATIONS, "iterations", iterations, 5);
+  knob (&w, only, K_SUBSTEPS, "substeps", substeps, 5);
+  knob (&w, only, K_ITERATIONS, "iterations", iterations, 4);
   knob (&w, only, K_CORRECTION, "position_correction", correction, 5);
   knob (&w, only, K_SLOP, "slop", slop, 4);
   knob (&w, only, K_NARROW, "narrow_phase", narrow, 2);
   knob (&w, only, K_CONTINUOUS, "continuous", continuous, 2);
   knob (&w, only, K_DT, "dt", rate, 4);
-  preset (&w, only, "fast", 1, 4, 0);
-  preset (&w, only, "precise", 4, 8, 1);
+  preset (&w, only, "fast", 2, 1, 0);
+  preset (&w, only, "precise", 8, 2, 1);
   free (w.ref[0]);
   free (w.ref[1]);
   if (w.failures)

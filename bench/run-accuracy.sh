@@ -72,11 +72,11 @@ with its debug assertions on).
   (bench/scenes.c); the peers' worlds are built by the peer benches' own code
   (their \`add_shape\` / \`add_fixture\`).
 * **carom settings**: one knob at a time from the defaults ($DEFAULTS):
-  substeps 1, 2, 4, 8; iterations 2, 4, 8, 16, 32; position_correction 0.05, 0.1,
+  substeps 1, 2, 4, 8, 16; iterations 1, 2, 4, 8; position_correction 0.05, 0.1,
   0.2, 0.4, 0.8; slop 0.001, 0.005, 0.01, 0.02; narrow phase SAT or vertex-edge;
   continuous collision off (the default) or on;
-  dt 1/30, 1/60, 1/120, 1/240 s. Presets: **fast** (substeps 1, iterations 4),
-  **balanced** (the defaults), **precise** (substeps 4, iterations 8, continuous collision on): they are
+  dt 1/30, 1/60, 1/120, 1/240 s. Presets: **fast** (substeps 2, iterations 1),
+  **balanced** (the defaults), **precise** (substeps 8, iterations 2, continuous collision on): they are
   points of this map, not separate modes.
 * **Peers** at their usual settings, dt 1/60: Chipmunk 7 with iterations 10,
   collision slop 0.01, no sleeping; Box2D 2.4 with velocity iterations 8, position
@@ -121,8 +121,8 @@ function label (row,    e, k, v) {
   if (e == "chipmunk") return "**Chipmunk 7** (usual settings)"
   if (e == "box2d") return "**Box2D 2.4** (usual settings)"
   if (k == "default") return "**balanced** (defaults)"
-  if (k == "preset" && v == "fast") return "**fast** (substeps 1, iterations 4)"
-  if (k == "preset" && v == "precise") return "**precise** (substeps 4, iterations 8, continuous on)"
+  if (k == "preset" && v == "fast") return "**fast** (substeps 2, iterations 1)"
+  if (k == "preset" && v == "precise") return "**precise** (substeps 8, iterations 2, continuous on)"
   if (k == "reference") return "reference at half resolution (16 substeps)"
   return k " = " v
 }

@@ -79,7 +79,7 @@ first () { pick "$1" "$2" | head -n 1; }
 
 # ------------------------------------------------------------ carom settings
 : >"$RAW/settings.txt"
-CONFIGS="1,4 1,8 1,16 2,4 4,2 4,4"
+CONFIGS="1,1 2,1 4,1 4,2 8,1 8,2"
 r=1
 while [ "$r" -le "$REPEATS" ]; do
   for s in pyramid rain gas; do
@@ -279,7 +279,7 @@ libbox2d-dev $(pkgv libbox2d-dev) (Debian packages)${B3_PEER}.
   its runtime assertions are on), which costs it some speed. Box2D v3 is built
   from its source tree by its own CMake in Release (\`-O3 -DNDEBUG\`, its default
   SSE2 code, AVX2 off) and linked statically.
-* Settings: carom with its defaults (substeps 1, iterations 8; other settings
+* Settings: carom with its defaults (substeps 4, iterations 1; other settings
   below). Chipmunk: iterations 10, collision slop 0.01 (its default 0.1 is meant
   for pixel-sized bodies), no sleeping (its default), bounding-box tree. Box2D:
   velocity iterations 8, position iterations 3, continuous collision on (its
@@ -329,7 +329,7 @@ fi)
 
 Median of $REPEATS rounds, the settings interleaved within each scene (not with
 the other engines, so compare with the carom row above with care). The defaults
-are substeps 1, iterations 8.
+are substeps 4, iterations 1.
 
 | substeps | iterations | pyramid ms/step | pyramid top drift | rain ms/step | rain escaped | gas ms/step | gas energy drift |
 |---:|---:|---:|---:|---:|---:|---:|---:|
@@ -423,7 +423,7 @@ EOF
       det=$(incl "$inc" contacts_update)
       bro=$(excl "$exc" broadphase_update)
       nar=$(incl "$inc" on_pair)
-      sol=$(incl "$inc" solver_update)
+      sol=$(incl "$inc" solver_step)
       echo "### $s"
       echo
       echo "Stages: detection $det% (of which the broad phase's own sweep and sort $bro%, the narrow phase and contact matching $nar%), solver $sol%, the rest (integration, gravity, bookkeeping) $(awk -v a="$det" -v b="$sol" 'BEGIN { printf "%.1f", 100 - a - b }')%."
@@ -462,21 +462,20 @@ EOF
   fi
   cat <<'EOF'
 
-- **The solver is most of the time (50-60%).** carom runs 8 velocity passes
-  per step in double precision, one contact point at a time, plus position
-  passes over the contacts that overlap beyond the slop; Box2D v3 uses float,
-  SIMD over four or eight contacts, graph colouring and soft sub-steps with
-  one pass each. The passes are already near the fewest instructions that
-  give the same answer (each point's update is some 20 instructions per
-  impulse); what is left is the data layout (a contact constraint array
-  separate from the manifolds, so the passes stream through memory) and SIMD
-  over contacts of different bodies in double, which needs the colouring.
-  Both are planned, in that order, each only with measurements showing it
-  pays.
-- **The narrow phase is a third.** SAT tests every edge of both pieces every
-  step. Pairs that barely moved relative to each other could keep last
-  step's manifold (moved with the bodies); that trades a bounded error for
-  time, so it would be a knob, measured in docs/accuracy.md like the others.
+- **Detection runs once per step; the solver four times.** Contacts are
+  found once per update and solved in every sub-step from the bodies'
+  motion, so sub-steps cost no extra detection (before this, four sub-steps
+  cost four detections and about four times the time). The solver's passes
+  still run one contact point at a time, in double precision, over the
+  contact records themselves; Box2D v3 solves four or eight contacts at once
+  in float SIMD, grouped by graph colour, from a compact constraint array.
+  Planned, in order, each only with measurements showing it pays: a
+  separate constraint array, then colouring and SIMD in double.
+- **The narrow phase** tests every edge of both pieces every step, and every
+  pair is matched again through a hash each step. Contacts that persist while
+  the bodies' enlarged boxes overlap, and manifolds kept while a pair barely
+  moved (a knob, measured in docs/accuracy.md like the others), are planned
+  next.
 - **The broad phase** is a sort and sweep below 4096 bodies and a uniform
   grid above (the sweep's strip tests grow as n sqrt(n) in crowded worlds:
   the gas at 100k bodies went from 65 to 42 ms per step with the grid, one

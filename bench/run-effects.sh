@@ -73,7 +73,7 @@ elif command -v valgrind >/dev/null 2>&1 && command -v callgrind_annotate >/dev/
   while read -r s v; do
     total=$(sed -n 's/^totals: //p' "$RAW/callgrind.$s.$v.out" 2>/dev/null || true)
     line="scene=$s variant=$v ir=${total:-0}"
-    for f in gravity_update damping_update sleep_wake_touched sleep_update solver_update contacts_update; do
+    for f in gravity_kick damping_update sleep_wake_touched sleep_update solver_step contacts_update; do
       n=$(awk -v f=":$f " '
             index($0, f) && /^ *[0-9,]+ / { n = $1; gsub(",", "", n); print n; exit }' "$RAW/profile.$s.$v.txt" 2>/dev/null)
       line="$line ir_$f=${n:-0}"
@@ -169,19 +169,19 @@ stage_cell () {
 }
 
 off_stage_table () {
-  echo "| scene | gravity_update (gravity, central) | damping_update | sleep_wake_touched | sleep_update | whole step |"
+  echo "| scene | gravity_kick (gravity, central) | damping_update | sleep_wake_touched | sleep_update | whole step |"
   echo "|---|---:|---:|---:|---:|---:|"
   for s in gas pyramid; do
-    echo "| $s, off variant | $(stage_cell "$s" gravity_update gravity central-gravity) | $(stage_cell "$s" damping_update damping) | $(stage_cell "$s" sleep_wake_touched sleeping) | $(stage_cell "$s" sleep_update sleeping) | $(per_step "$(key ir "$(grep "^scene=$s variant=off " "$RAW/count.txt" 2>/dev/null || true)")") |"
+    echo "| $s, off variant | $(stage_cell "$s" gravity_kick gravity central-gravity) | $(stage_cell "$s" damping_update damping) | $(stage_cell "$s" sleep_wake_touched sleeping) | $(stage_cell "$s" sleep_update sleeping) | $(per_step "$(key ir "$(grep "^scene=$s variant=off " "$RAW/count.txt" 2>/dev/null || true)")") |"
   done
 }
 
 stage_on_table () {
   echo "| scene | variant | stage function | Ir/step in it | share of the step |"
   echo "|---|---|---|---:|---:|"
-  for sv in gas:gravity-tiny:gravity_update gas:central-tiny:gravity_update gas:damping-tiny:damping_update \
+  for sv in gas:gravity-tiny:gravity_kick gas:central-tiny:gravity_kick gas:damping-tiny:damping_update \
             gas:sleeping:sleep_update gas:sleeping:sleep_wake_touched pyramid:sleeping:sleep_update \
-            pyramid:sleeping:sleep_wake_touched pyramid:damping:damping_update pyramid:central:gravity_update; do
+            pyramid:sleeping:sleep_wake_touched pyramid:damping:damping_update pyramid:central:gravity_kick; do
     s=${sv%%:*}
     rest=${sv#*:}
     v=${rest%%:*}
@@ -244,7 +244,7 @@ work for it as for any body.
   changes it) so that it does something; **idle** switches it on with a value
   that does (next to) nothing; **stage-off** switches off an effect the scene
   itself uses (its cost is then the baseline over this row).
-* dt = 1/60, one sub-step, 8 iterations (the defaults); $WARMUP warm-up steps,
+* dt = 1/60, 4 sub-steps, 1 iteration (the defaults); $WARMUP warm-up steps,
   then $STEPS timed steps. All variants of a scene live in one process and are
   stepped interleaved, $CHUNK steps of one, then $CHUNK of the next, the order
   rotating, so machine noise hits them alike. The whole run (fresh worlds,
