@@ -79,7 +79,7 @@ static void shock_pass (carom_world *world, const step_context *ctx, const int32
   int32_t i, j;
   for (i = 0; i < count; ++i)
     {
-      contact *k = &c->list[order[i]];
+      const contact *k = &c->list[order[i]];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
       /* hold the lower body still: only the upper one takes the impulse */
       int a_is_lower = level[k->a] < level[k->b];
@@ -120,7 +120,7 @@ static void shock_pass (carom_world *world, const step_context *ctx, const int32
           }
       for (j = 0; j < k->count; ++j)
         {
-          contact_point *p = &k->points[j];
+          const contact_point *p = &k->points[j];
           double r_up = a_is_lower ? p->rn_b : p->rn_a;
           /* raising vn: +x n on b, or -x n on a */
           double lambda = a_is_lower ? x[j] : -x[j];
@@ -128,9 +128,6 @@ static void shock_pass (carom_world *world, const step_context *ctx, const int32
             continue;
           up->v = v2_mad (up->v, up->im * lambda, p->normal);
           up->w += up->ii * r_up * lambda;
-          /* kept as the contact's impulse, so the next sub-step's warm start
-           * applies it to both bodies, as a real contact force */
-          p->normal_impulse += x[j];
         }
     }
 }
