@@ -16,7 +16,7 @@ CPPFLAGS += -Iinclude -MMD -MP
 LDLIBS_LIB := -lm
 
 VERSION_MAJOR := 0
-VERSION       := 0.1.0
+VERSION       := 0.2.0
 SONAME  := libcarom.so.$(VERSION_MAJOR)
 SO_REAL := $(BUILD)/libcarom.so.$(VERSION)
 

@@ -68,6 +68,7 @@ static void *carom_create (const bench_scene *s, const acc_settings *set)
   def.iterations = set->iterations;
   def.position_correction = set->position_correction;
   def.slop = set->slop;
+  def.manifold_tolerance = set->manifold_tolerance;
   def.narrow_phase = set->narrow_phase ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
   if (!h->ids || !h->map || carom_world_init (&h->world, &def) != CAROM_OK
       || carom_world_set_continuous (h->world, set->continuous) != CAROM_OK)
@@ -146,6 +147,7 @@ static int settings_default (acc_settings *set)
   set->iterations = def.iterations;
   set->position_correction = def.position_correction;
   set->slop = def.slop;
+  set->manifold_tolerance = def.manifold_tolerance;
   set->narrow_phase = def.narrow_phase == CAROM_NARROW_VERTEX_EDGE;
   set->continuous = 0;
   set->dt = 1.0 / 60.0;
@@ -216,7 +218,7 @@ static int wanted (const char *list, const char *knob)
   return 0;
 }
 
-typedef enum knob_id { K_SUBSTEPS, K_ITERATIONS, K_CORRECTION, K_SLOP, K_NARROW, K_CONTINUOUS, K_DT } knob_id;
+typedef enum knob_id { K_SUBSTEPS, K_ITERATIONS, K_CORRECTION, K_SLOP, K_MANIFOLD, K_NARROW, K_CONTINUOUS, K_DT } knob_id;
 
 static void knob (sweep *w, const char *only, knob_id k, const char *name, const double *values, int n)
 {
@@ -246,6 +248,10 @@ static void knob (sweep *w, const char *only, knob_id k, const char *name, const
           set.slop = values[i];
           snprintf (set.value, sizeof set.value, "%g", values[i]);
           break;
+        case K_MANIFOLD:
+          set.manifold_tolerance = values[i];
+          snprintf (set.value, sizeof set.value, "%g", values[i]);
+          break;
         case K_NARROW:
           set.narrow_phase = (int) values[i];
           strcpy (set.value, set.narrow_phase ? "vertex-edge" : "SAT");
@@ -261,6 +267,7 @@ static void knob (sweep *w, const char *only, knob_id k, const char *name, const
         }
       same = set.substeps == w->def.substeps && set.iterations == w->def.iterations
              && set.position_correction == w->def.position_correction && set.slop == w->def.slop
+             && set.manifold_tolerance == w->def.manifold_tolerance
              && set.narrow_phase == w->def.narrow_phase && set.continuous == w->def.continuous
              && set.dt == w->def.dt;
       fprintf (stderr, "accuracy: %s=%s\n", set.knob, set.value);
@@ -287,6 +294,7 @@ int main (int argc, char **argv)
 {
   static const double substeps[] = { 1, 2, 4, 8, 16 }, iterations[] = { 1, 2, 4, 8 },
                       correction[] = { 0.05, 0.1, 0.2, 0.4, 0.8 }, slop[] = { 0.001, 0.005, 0.01, 0.02 },
+                      manifold[] = { 0, 0.001, 0.01, 0.05, 0.2 },
                       narrow[] = { 0, 1 }, continuous[] = { 0, 1 }, rate[] = { 30, 60, 120, 240 };
   const char *only = NULL;
   sweep w;
@@ -300,7 +308,7 @@ int main (int argc, char **argv)
       w.with_reference = atoi (argv[i] + 10);
     else
       {
-        fprintf (stderr, "usage: %s [knobs=substeps,iterations,position_correction,slop,narrow_phase,continuous,dt,preset] "
+        fprintf (stderr, "usage: %s [knobs=substeps,iterations,position_correction,slop,manifold_tolerance,narrow_phase,continuous,dt,preset] "
                          "[reference=0|1]\n", argv[0]);
         return 2;
       }
@@ -309,8 +317,9 @@ int main (int argc, char **argv)
       fprintf (stderr, "accuracy: carom_world_def_init failed\n");
       return 1;
     }
-  printf ("defaults substeps=%d iterations=%d position_correction=%g slop=%g narrow_phase=%s dt=1/60\n",
-          w.def.substeps, w.def.iterations, w.def.position_correction, w.def.slop,
+  printf ("defaults substeps=%d iterations=%d position_correction=%g slop=%g manifold_tolerance=%g narrow_phase=%s "
+          "dt=1/60\n",
+          w.def.substeps, w.def.iterations, w.def.position_correction, w.def.slop, w.def.manifold_tolerance,
           w.def.narrow_phase ? "vertex-edge" : "SAT");
 
   if (w.with_reference)
@@ -319,7 +328,7 @@ int main (int argc, char **argv)
       acc_settings ref = w.def, half;
       strcpy (ref.knob, "reference");
       strcpy (ref.value, "32x50@1/120");
-      ref.dt = 1.0 / 120.0, ref.substeps = 32, ref.iterations = 50;
+      ref.dt = 1.0 / 120.0, ref.substeps = 32, ref.iterations = 50, ref.manifold_tolerance = 0.0;
       half = ref;
       strcpy (half.value, "16x50@1/120");
       half.substeps = 16;
@@ -345,6 +354,7 @@ int main (int argc, char **argv)
   knob (&w, only, K_ITERATIONS, "iterations", iterations, 4);
   knob (&w, only, K_CORRECTION, "position_correction", correction, 5);
   knob (&w, only, K_SLOP, "slop", slop, 4);
+  knob (&w, only, K_MANIFOLD, "manifold_tolerance", manifold, 5);
   knob (&w, only, K_NARROW, "narrow_phase", narrow, 2);
   knob (&w, only, K_CONTINUOUS, "continuous", continuous, 2);
   knob (&w, only, K_DT, "dt", rate, 4);

@@ -30,6 +30,7 @@ typedef struct acc_settings {
   char value[16];  /* as printed */
   int substeps, iterations;
   double position_correction, slop;
+  double manifold_tolerance; /* carom_world_def.manifold_tolerance */
   int narrow_phase; /* 0: SAT, 1: vertex-edge (carom's enum values) */
   int continuous;   /* carom_world_set_continuous (off by default) */
   double dt;

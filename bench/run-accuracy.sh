@@ -73,7 +73,8 @@ with its debug assertions on).
   (their \`add_shape\` / \`add_fixture\`).
 * **carom settings**: one knob at a time from the defaults ($DEFAULTS):
   substeps 1, 2, 4, 8, 16; iterations 1, 2, 4, 8; position_correction 0.05, 0.1,
-  0.2, 0.4, 0.8; slop 0.001, 0.005, 0.01, 0.02; narrow phase SAT or vertex-edge;
+  0.2, 0.4, 0.8; slop 0.001, 0.005, 0.01, 0.02; manifold_tolerance 0, 0.001, 0.01,
+  0.05, 0.2 (0: recompute every step); narrow phase SAT or vertex-edge;
   continuous collision off (the default) or on;
   dt 1/30, 1/60, 1/120, 1/240 s. Presets: **fast** (substeps 2, iterations 1),
   **balanced** (the defaults), **precise** (substeps 8, iterations 2, continuous collision on): they are
@@ -206,7 +207,7 @@ END {
   NNAME[4] = "Stacks that stand still"
   NNAME[5] = "Piles without visible overlap"
   NNAME[6] = "Trajectories close to the converged answer (stacks)"
-  nknob = split ("substeps iterations position_correction slop narrow_phase continuous dt", KN, " ")
+  nknob = split ("substeps iterations position_correction slop manifold_tolerance narrow_phase continuous dt", KN, " ")
   for (n = 1; n <= NN; ++n) {
     split (NEED[n], f, ":"); m = f[1]; k = f[2]; title = f[3]
     for (ki = 1; ki <= nknob; ++ki) {
@@ -283,7 +284,7 @@ if command -v gnuplot >/dev/null 2>&1; then
       echo "set title '$(cat "$PLOT/need$n.title")'"
       plot="plot"
       sep=""
-      for k in substeps iterations position_correction slop narrow_phase continuous dt; do
+      for k in substeps iterations position_correction slop manifold_tolerance narrow_phase continuous dt; do
         f=$PLOT/need${n}_$k.dat
         [ -s "$f" ] || continue
         plot="$plot$sep '$f' using 1:2 with linespoints title '$(echo $k | tr _ ' ')'"

@@ -90,20 +90,26 @@ static void report_status (const char *call, carom_status got, unsigned allowed)
 
 /* ---------------------------------------------------------- world settings */
 
+/* The size of version 0.1's carom_world_def, which ended at the allocator:
+ * the library takes it as well as its own. */
+#define WORLD_DEF_0_1_SIZE (offsetof (carom_world_def, allocator) + sizeof (carom_allocator))
+
 /* The statuses carom_world_init may return for `d` (0: it must accept). */
 static unsigned world_def_problems (const carom_world_def *d)
 {
   unsigned p = 0;
-  if (d->size != sizeof *d)
+  if (d->size != sizeof *d && d->size != WORLD_DEF_0_1_SIZE)
     return BIT (CAROM_ERR_BAD_STRUCT_SIZE);
   if (!isfinite (d->gravity_x) || !isfinite (d->gravity_y) || !isfinite (d->restitution) || !isfinite (d->friction)
-      || !isfinite (d->position_correction) || !isfinite (d->slop))
+      || !isfinite (d->position_correction) || !isfinite (d->slop)
+      || (d->size == sizeof *d && !isfinite (d->manifold_tolerance))) /* 0.1's def ends before it */
     p |= BIT (CAROM_ERR_NOT_FINITE);
   if (too_big (d->gravity_x) || too_big (d->gravity_y) || (isfinite (d->restitution) && !in_range (d->restitution, 0.0, 1.0))
       || (isfinite (d->friction) && d->friction < 0.0)
       || d->substeps < 1 || d->substeps > 1000 || d->iterations < 1 || d->iterations > 1000
       || (isfinite (d->position_correction) && !in_range (d->position_correction, 0.0, 1.0))
       || (isfinite (d->slop) && !in_range (d->slop, 0.0, 1.0))
+      || (d->size == sizeof *d && isfinite (d->manifold_tolerance) && !in_range (d->manifold_tolerance, 0.0, 1.0))
       || (d->narrow_phase != CAROM_NARROW_SAT && d->narrow_phase != CAROM_NARROW_VERTEX_EDGE)
       || (!d->allocator.alloc != !d->allocator.free))
     p |= BIT (CAROM_ERR_BAD_ARGUMENT);
@@ -132,7 +138,8 @@ static void make_world (fuzz_world *f)
       uint32_t size = fuzz_u32 (&f->in);
       memset (buf, 0xA5, sizeof buf);
       s = carom_world_def_init ((carom_world_def *) (void *) buf, size);
-      if (size == sizeof (carom_world_def) ? s != CAROM_OK : s != CAROM_ERR_BAD_STRUCT_SIZE)
+      if (size == sizeof (carom_world_def) || size == WORLD_DEF_0_1_SIZE ? s != CAROM_OK
+                                                                         : s != CAROM_ERR_BAD_STRUCT_SIZE)
         FUZZ_FINDING ("world_def_init (size %lu) returned %d", (unsigned long) size, (int) s);
       if (s != CAROM_OK)
         {
@@ -163,6 +170,8 @@ static void make_world (fuzz_world *f)
     d.narrow_phase = (carom_narrow_phase) (int32_t) fuzz_u32 (&f->in);
   else
     d.narrow_phase = (extra & 1) ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
+  if ((extra & 0x80) && (which & 1))
+    d.manifold_tolerance = fuzz_number (&f->in, 0);
   if ((extra & 0x0e) == 0x0e)
     d.size = fuzz_u32 (&f->in);
   if ((extra & 0x70) == 0x70)
@@ -195,10 +204,11 @@ static void make_world (fuzz_world *f)
   ok.iterations = 1 + (int32_t) ((uint32_t) d.iterations % 16);
   ok.position_correction = in_range (d.position_correction, 0.0, 1.0) ? d.position_correction : 0.2;
   ok.slop = in_range (d.slop, 0.0, 1.0) ? d.slop : 0.01;
+  ok.manifold_tolerance = in_range (d.manifold_tolerance, 0.0, 1.0) ? d.manifold_tolerance : 0.01;
   ok.narrow_phase = (extra & 1) ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
   TRACE ("world: gravity (%.17g, %.17g) e %.17g mu %.17g substeps %d iterations %d correction %.17g slop %.17g "
-         "narrow %d\n", ok.gravity_x, ok.gravity_y, ok.restitution, ok.friction, (int) ok.substeps,
-         (int) ok.iterations, ok.position_correction, ok.slop, (int) ok.narrow_phase);
+         "manifold %.17g narrow %d\n", ok.gravity_x, ok.gravity_y, ok.restitution, ok.friction, (int) ok.substeps,
+         (int) ok.iterations, ok.position_correction, ok.slop, ok.manifold_tolerance, (int) ok.narrow_phase);
   if (carom_world_init (&f->w, &ok) != CAROM_OK)
     FUZZ_FINDING ("world_init of a clamped def failed");
 }

@@ -36,7 +36,7 @@ extern "C" {
 /* ---------------------------------------------------------------- version */
 
 #define CAROM_VERSION_MAJOR 0
-#define CAROM_VERSION_MINOR 1
+#define CAROM_VERSION_MINOR 2
 #define CAROM_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH of the headers compiled against. */
 #define CAROM_VERSION                                                          \
@@ -141,13 +141,22 @@ typedef struct carom_world_def {
                                 its area over its perimeter); default 0.01 */
   carom_narrow_phase narrow_phase; /**< convex polygon method; default SAT */
   carom_allocator allocator; /**< alloc == NULL means malloc/free */
+  /* ---- version 0.2 */
+  double manifold_tolerance; /**< a pair of convex polygons keeps last
+                                  step's contact points (moved with the
+                                  bodies) while its relative pose stays
+                                  within this fraction of the smaller
+                                  body's size and this many radians of
+                                  where they were last computed (SAT only);
+                                  0 recomputes every step; in [0, 1];
+                                  default 0.01 */
 } carom_world_def;
 
 /**
  * Fill `def` with the defaults above and set its size field to `size`, the
  * caller's sizeof (carom_world_def); writes no byte past `size`. Errors:
- * NULL_ARGUMENT, BAD_STRUCT_SIZE (smaller than version 0.1's struct or larger
- * than this library's).
+ * NULL_ARGUMENT, BAD_STRUCT_SIZE (not the size of the struct in a released
+ * version of this header: 0.1's, without manifold_tolerance, or this one's).
  */
 CAROM_API carom_status carom_world_def_init (carom_world_def *def,
                                              uint32_t size);

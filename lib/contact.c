@@ -80,14 +80,64 @@ static int build_table (carom_world *world)
 
 typedef struct pair_context {
   double restitution, friction, slop, margin;
+  double reuse_lin, reuse_ang; /* manifold reuse tolerance (0: never) */
 } pair_context;
 
+/* Where each point of a freshly computed manifold lies, in a's frame: a's
+ * copy of it (half the depth along the normal from the point, which the
+ * narrow phase puts halfway), b's copy, and the normal. */
+static void remember_points (contact *k, xform xa, xform xb)
+{
+  int32_t i;
+  k->computed_at = xform_relative (xa, xb);
+  k->reused = 0;
+  for (i = 0; i < k->count; ++i)
+    {
+      contact_point *p = &k->points[i];
+      vec2 half = v2_scale (p->normal, 0.5 * p->depth);
+      p->local_a = xform_apply_inv (xa, v2_add (p->point, half));
+      p->local_b = xform_apply_inv (xa, v2_sub (p->point, half));
+      p->local_normal = rot2_apply_inv (xa.q, p->normal);
+    }
+}
+
+/* Last step's points of a pair, moved with the bodies, if the pair's
+ * relative pose is still within the tolerance of where they were computed:
+ * a's copy of each point stays put in a's frame, b's moves with b, the
+ * normal turns with the body whose face gave it (bit 31 of the feature:
+ * b's), and the depth is measured again between the two copies. Returns 0
+ * (compute afresh) otherwise. */
+static int reuse_manifold (const contact *old, xform xa, xform xb, double tol_lin, double tol_ang, manifold *m)
+{
+  xform now = xform_relative (xa, xb), then = old->computed_at;
+  rot2 turn;
+  int32_t i;
+  turn.c = then.q.c * now.q.c + then.q.s * now.q.s; /* now / then */
+  turn.s = then.q.c * now.q.s - then.q.s * now.q.c;
+  if (!(v2_len (v2_sub (now.p, then.p)) <= tol_lin && fabs (turn.s) <= tol_ang && turn.c > 0.0))
+    return 0;
+  m->count = old->count;
+  for (i = 0; i < old->count; ++i)
+    {
+      const contact_point *p = &old->points[i];
+      /* b's copy: back into b's frame as it was, out again as it is */
+      vec2 b_local = xform_apply (now, xform_apply_inv (then, p->local_b));
+      vec2 n = p->feature >> 31 ? rot2_apply (turn, p->local_normal) : p->local_normal;
+      manifold_point *mp = &m->points[i];
+      mp->depth = v2_dot (v2_sub (p->local_a, b_local), n);
+      mp->point = xform_apply (xa, v2_scale (v2_add (p->local_a, b_local), 0.5));
+      mp->normal = rot2_apply (xa.q, n);
+      mp->feature = p->feature;
+    }
+  return 1;
+}
+
 static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, const manifold *m,
-                          const pair_context *pc)
+                          const pair_context *pc, int32_t old, const contact *reused_from, xform xa, xform xb)
 {
   contacts *c = &world->contacts;
   contact *k;
-  int32_t old, i, j;
+  int32_t i, j;
   if (m->count == 0)
     return;
   if (!mem_reserve (&world->allocator, (void **) &c->list, &c->cap, c->count + 1, sizeof (contact)))
@@ -103,7 +153,6 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
   k->count = m->count;
   k->first_point = c->point_count;
   c->point_count += m->count;
-  old = find_old (c, a, b, pa, pb);
   for (i = 0; i < m->count; ++i)
     {
       contact_point *p = &k->points[i];
@@ -127,6 +176,45 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
             break;
           }
     }
+  if (!reused_from)
+    remember_points (k, xa, xb);
+  else
+    {
+      /* the pose and the points of the last computation carry on, so the
+       * tolerance bounds the drift from it, not from each step */
+      k->computed_at = reused_from->computed_at;
+      k->reused = 1;
+      for (i = 0; i < k->count; ++i)
+        {
+          k->points[i].local_a = reused_from->points[i].local_a;
+          k->points[i].local_b = reused_from->points[i].local_b;
+          k->points[i].local_normal = reused_from->points[i].local_normal;
+        }
+    }
+}
+
+/* The narrow phase for one pair of pieces, or last step's points moved
+ * (reuse_manifold), then the contact. */
+static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, const pair_context *pc,
+                         xform xa, xform xb, manifold *m, int can_reuse)
+{
+  contacts *c = &world->contacts;
+  int32_t old = find_old (c, a, b, pa, pb);
+  const contact *from = NULL;
+  if (can_reuse && old >= 0 && reuse_manifold (&c->old[old], xa, xb, pc->reuse_lin, pc->reuse_ang, m))
+    from = &c->old[old];
+  else if (pa < 0 && pb < 0 && world->bodies[a].shape.kind == CAROM_SHAPE_CIRCLE)
+    collide_circles (xa.p, world->bodies[a].shape.radius, xb.p, world->bodies[b].shape.radius, pc->margin, m);
+  else if (pb < 0 && world->bodies[b].shape.kind == CAROM_SHAPE_CIRCLE)
+    collide_polygon_circle (&world->bodies[a].shape.pieces[pa], xa, xb.p, world->bodies[b].shape.radius, pc->margin,
+                            m);
+  else if (pa < 0)
+    collide_polygons_vertex_edge (world->bodies[a].shape.vertices, world->bodies[a].shape.count, xa,
+                                  world->bodies[b].shape.vertices, world->bodies[b].shape.count, xb, pc->margin, m);
+  else
+    collide_polygons_sat (&world->bodies[a].shape.pieces[pa], xa, &world->bodies[b].shape.pieces[pb], xb, pc->margin,
+                          m);
+  add_manifold (world, a, b, pa, pb, m, pc, old, from, xa, xb);
 }
 
 static double material (double own, double fallback)
@@ -172,13 +260,14 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
    * are contacts now, so impacts are met before the bodies overlap */
   pc.margin = pc.slop + body_reach (A, ctx->dt, ctx->accel, ctx->continuous || B->bullet)
               + body_reach (B, ctx->dt, ctx->accel, ctx->continuous || A->bullet);
+  pc.reuse_ang = world->def.manifold_tolerance;
+  pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   xa.p = A->p, xa.q = A->q;
   xb.p = B->p, xb.q = B->q;
 
   if (A->shape.kind == CAROM_SHAPE_CIRCLE)
     {
-      collide_circles (A->p, A->shape.radius, B->p, B->shape.radius, pc.margin, &m);
-      add_manifold (world, a, b, -1, -1, &m, &pc);
+      pair_pieces (world, a, b, -1, -1, &pc, xa, xb, &m, 0);
       return;
     }
   if (B->shape.kind == CAROM_SHAPE_CIRCLE)
@@ -189,16 +278,13 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
           vec2 c = xform_apply (xa, p->center);
           if (v2_len (v2_sub (B->p, c)) > p->bound_radius + B->shape.radius + pc.margin)
             continue;
-          collide_polygon_circle (p, xa, B->p, B->shape.radius, pc.margin, &m);
-          add_manifold (world, a, b, i, -1, &m, &pc);
+          pair_pieces (world, a, b, i, -1, &pc, xa, xb, &m, 0);
         }
       return;
     }
   if (world->def.narrow_phase == CAROM_NARROW_VERTEX_EDGE)
     {
-      collide_polygons_vertex_edge (A->shape.vertices, A->shape.count, xa, B->shape.vertices, B->shape.count, xb,
-                                    pc.margin, &m);
-      add_manifold (world, a, b, -1, -1, &m, &pc);
+      pair_pieces (world, a, b, -1, -1, &pc, xa, xb, &m, 0);
       return;
     }
   for (i = 0; i < A->shape.piece_count; ++i)
@@ -211,8 +297,7 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
           vec2 qc = xform_apply (xb, q->center);
           if (v2_len (v2_sub (qc, pc_center)) > p->bound_radius + q->bound_radius + pc.margin)
             continue;
-          collide_polygons_sat (p, xa, q, xb, pc.margin, &m);
-          add_manifold (world, a, b, i, j, &m, &pc);
+          pair_pieces (world, a, b, i, j, &pc, xa, xb, &m, pc.reuse_lin > 0.0);
         }
     }
 }

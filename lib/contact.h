@@ -31,6 +31,9 @@ typedef struct contact_point {
                                              the step when applied */
   double toi;                             /* apart and closing at detection:
                                              when it meets, else -1 */
+  /* where the point was last computed, in body a's frame: a's and b's
+   * copies of it and the normal (manifold reuse, contact.c) */
+  vec2 local_a, local_b, local_normal;
 } contact_point;
 
 typedef struct contact {
@@ -43,6 +46,9 @@ typedef struct contact {
   int32_t block;              /* two points solved as one 2x2 problem */
   int32_t met;                /* pushed this step (its approach is measured) */
   double k11, k12, k22;       /* its matrix (eq. 3.23's denominators and their coupling) */
+  xform computed_at;          /* b's pose in a's frame when the points were
+                                 last computed by the narrow phase */
+  int32_t reused;             /* this step's points are last step's, moved */
   int32_t count;
   contact_point points[MANIFOLD_MAX_POINTS];
 } contact;

@@ -8,7 +8,7 @@ static carom_status init_prefix (void *def, uint32_t size, const void *defaults,
 {
   if (!def)
     return CAROM_ERR_NULL_ARGUMENT;
-  if (size < min_size || size > own_size)
+  if (size != min_size && size != own_size)
     return CAROM_ERR_BAD_STRUCT_SIZE;
   memcpy (def, defaults, size);
   memcpy (def, &size, sizeof size); /* the leading size field */
@@ -17,7 +17,7 @@ static carom_status init_prefix (void *def, uint32_t size, const void *defaults,
 
 static carom_status import (const void *in, uint32_t in_size, void *out, size_t own_size, size_t min_size)
 {
-  if (in_size < min_size || in_size > own_size)
+  if (in_size != min_size && in_size != own_size)
     return CAROM_ERR_BAD_STRUCT_SIZE;
   memcpy (out, in, in_size);
   return CAROM_OK;
@@ -33,6 +33,7 @@ static carom_world_def world_defaults (void)
   d.position_correction = 0.2;
   d.slop = 0.01;
   d.narrow_phase = CAROM_NARROW_SAT;
+  d.manifold_tolerance = 0.01;
   return d;
 }
 

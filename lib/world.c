@@ -12,12 +12,14 @@
 static carom_status check_def (const carom_world_def *def)
 {
   if (!is_finite (def->gravity_x) || !is_finite (def->gravity_y) || !is_finite (def->restitution)
-      || !is_finite (def->friction) || !is_finite (def->position_correction) || !is_finite (def->slop))
+      || !is_finite (def->friction) || !is_finite (def->position_correction) || !is_finite (def->slop)
+      || !is_finite (def->manifold_tolerance))
     return CAROM_ERR_NOT_FINITE;
   if (!is_moderate (def->gravity_x) || !is_moderate (def->gravity_y) || def->restitution < 0.0
       || def->restitution > 1.0 || def->friction < 0.0 || def->substeps < 1
       || def->substeps > 1000 || def->iterations < 1 || def->iterations > 1000 || def->position_correction < 0.0
       || def->position_correction > 1.0 || def->slop < 0.0 || def->slop > 1.0
+      || def->manifold_tolerance < 0.0 || def->manifold_tolerance > 1.0
       || (def->narrow_phase != CAROM_NARROW_SAT && def->narrow_phase != CAROM_NARROW_VERTEX_EDGE)
       || (!def->allocator.alloc != !def->allocator.free))
     return CAROM_ERR_BAD_ARGUMENT;

@@ -601,7 +601,16 @@ static void test_world_settings_out_of_range_and_at_the_limits (void **state)
     { "narrow_phase -1", 6, -1, CAROM_ERR_BAD_ARGUMENT },
     { "allocator: alloc without free", 7, 0, CAROM_ERR_BAD_ARGUMENT },
     { "allocator: free without alloc", 8, 0, CAROM_ERR_BAD_ARGUMENT },
+    { "manifold_tolerance -1e-9", 10, -1e-9, CAROM_ERR_BAD_ARGUMENT },
+    { "manifold_tolerance 1.01", 10, 1.01, CAROM_ERR_BAD_ARGUMENT },
+    { "manifold_tolerance NaN", 10, NAN, CAROM_ERR_NOT_FINITE },
+    { "manifold_tolerance inf", 10, INFINITY, CAROM_ERR_NOT_FINITE },
+    { "manifold_tolerance 0", 10, 0.0, CAROM_OK },
+    { "manifold_tolerance 1", 10, 1.0, CAROM_OK },
     { "size 0", 9, 0, CAROM_ERR_BAD_STRUCT_SIZE },
+    { "size of 0.1's struct", 9, offsetof (carom_world_def, allocator) + sizeof (carom_allocator), CAROM_OK },
+    { "size of 0.1's struct + 4", 9, offsetof (carom_world_def, allocator) + sizeof (carom_allocator) + 4,
+      CAROM_ERR_BAD_STRUCT_SIZE },
     { "size sizeof - 1", 9, sizeof (carom_world_def) - 1, CAROM_ERR_BAD_STRUCT_SIZE },
     { "size sizeof + 8", 9, sizeof (carom_world_def) + 8, CAROM_ERR_BAD_STRUCT_SIZE },
     { "size UINT32_MAX", 9, UINT32_MAX, CAROM_ERR_BAD_STRUCT_SIZE },
@@ -629,6 +638,7 @@ static void test_world_settings_out_of_range_and_at_the_limits (void **state)
         case 6: d.narrow_phase = (carom_narrow_phase) (int32_t) c->value; break;
         case 7: d.allocator.alloc = unused_alloc; break;
         case 8: d.allocator.free = unused_free; break;
+        case 10: d.manifold_tolerance = c->value; break;
         default: d.size = (uint32_t) c->value; break;
         }
       s = carom_world_init (&w, &d);

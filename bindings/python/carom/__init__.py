@@ -36,7 +36,7 @@ __all__ = [
     "status_string",
 ]
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 
 #: (major, minor, patch) of the shared library loaded at run time.
 library_version = _native.version_tuple
@@ -138,7 +138,7 @@ def _pair(value, what):
 
 def _world_def(gravity=(0.0, 0.0), restitution=0.0, friction=0.0, substeps=4,
                iterations=1, position_correction=0.2, slop=0.01,
-               narrow_phase=NarrowPhase.SAT):
+               narrow_phase=NarrowPhase.SAT, manifold_tolerance=0.01):
     d = _native.new_def(_native.WorldDef)
     d.gravity_x, d.gravity_y = _pair(gravity, "gravity")
     d.restitution = _finite(restitution, "restitution")
@@ -154,6 +154,7 @@ def _world_def(gravity=(0.0, 0.0), restitution=0.0, friction=0.0, substeps=4,
             raise ValueError("narrow_phase must be 'sat' or 'vertex_edge', got %r"
                              % narrow_phase) from None
     d.narrow_phase = int(narrow_phase)
+    d.manifold_tolerance = _finite(manifold_tolerance, "manifold_tolerance")
     return d
 
 
@@ -167,7 +168,8 @@ class World:
     """A simulation world (carom_world).
 
     World(gravity=(0, 0), restitution=0, friction=0, substeps=4, iterations=1,
-          position_correction=0.2, slop=0.01, narrow_phase="sat")
+          position_correction=0.2, slop=0.01, narrow_phase="sat",
+          manifold_tolerance=0.01)
 
     Use it as a context manager, or call close(); a world that is garbage
     collected is closed too. Bodies keep their world alive.

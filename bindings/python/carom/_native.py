@@ -42,7 +42,7 @@ class Allocator(ctypes.Structure):
 
 
 class WorldDef(ctypes.Structure):
-    """carom_world_def, version 0.1 layout (fields only ever appended)."""
+    """carom_world_def, version 0.2 layout (fields only ever appended)."""
 
     _fields_ = [
         ("size", ctypes.c_uint32),
@@ -56,6 +56,7 @@ class WorldDef(ctypes.Structure):
         ("slop", ctypes.c_double),
         ("narrow_phase", ctypes.c_int),
         ("allocator", Allocator),
+        ("manifold_tolerance", ctypes.c_double),  # version 0.2
     ]
 
 

@@ -51,6 +51,7 @@ def test_struct_layouts_match_the_library(init, cls):
 def test_struct_defaults_come_from_the_library():
     d = _native.new_def(_native.WorldDef)
     assert (d.substeps, d.iterations, d.position_correction, d.slop) == (4, 1, 0.2, 0.01)
+    assert d.manifold_tolerance == 0.01
     b = _native.new_def(_native.BodyDef)
     assert (b.type, b.density, b.restitution, b.friction) == (0, 1.0, -1.0, -1.0)
 

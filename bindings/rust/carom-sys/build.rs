@@ -41,7 +41,7 @@ fn main() {
 #[cfg(feature = "pkg-config")]
 fn probe(statik: bool) {
     if let Err(err) = pkg_config::Config::new()
-        .range_version("0.1.0".."1.0.0")
+        .range_version("0.2.0".."1.0.0")
         .statik(statik)
         .probe("carom")
     {

@@ -34,7 +34,7 @@ use std::os::raw::{c_char, c_int, c_void};
 // ------------------------------------------------------------------ version
 
 pub const CAROM_VERSION_MAJOR: u32 = 0;
-pub const CAROM_VERSION_MINOR: u32 = 1;
+pub const CAROM_VERSION_MINOR: u32 = 2;
 pub const CAROM_VERSION_PATCH: u32 = 0;
 /// MAJOR * 10000 + MINOR * 100 + PATCH of the header these declarations follow.
 pub const CAROM_VERSION: u32 =
@@ -115,6 +115,8 @@ pub struct carom_world_def {
     pub slop: f64,
     pub narrow_phase: carom_narrow_phase,
     pub allocator: carom_allocator,
+    // version 0.2
+    pub manifold_tolerance: f64,
 }
 
 #[repr(C)]

@@ -21,6 +21,7 @@ fn version_and_struct_sizes_match_the_library() {
     assert_eq!(safe::body_def().density, 1.0);
     assert_eq!(safe::world_def().iterations, 1);
     assert_eq!(safe::world_def().substeps, 4);
+    assert_eq!(safe::world_def().manifold_tolerance, 0.01);
 }
 
 #[test]
