@@ -57,6 +57,8 @@ for t in "$@"; do
 done
 if [ -n "$bad" ]; then
   echo "fuzz: FAILED:$bad (inputs in $dir/artifacts/)"
+  echo "fuzz: $(( $# - $(echo $bad | wc -w) )) passed, $(echo $bad | wc -w) failed"
   exit 1
 fi
 echo "fuzz: $# targets, $total runs, no finding"
+echo "fuzz: $# passed, 0 failed"

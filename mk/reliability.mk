@@ -6,7 +6,10 @@
 #                           FUZZ_SECONDS each (default 60) from fuzz/corpus/
 #   make fuzz-smoke         a fixed number of runs each, seed 1, from the
 #                           committed seeds only (about 10 s each)
-#   make check-reliability  sanitize, then fuzz-smoke (what CI runs)
+#   make mutate             every mutant of tests/mutants.txt built and the
+#                           fast tests run on it (tools/mutate): each must
+#                           be caught
+#   make check-reliability  sanitize, fuzz-smoke, then mutate (what CI runs)
 # The allocation-failure test, tests/test_alloc_failure.c, is an ordinary
 # cmocka test: make check runs it under Valgrind, make sanitize under ASan.
 #
@@ -34,7 +37,11 @@ FUZZ_BIN     := $(FUZZ_TARGETS:%=$(FUZZ_DIR)/fuzz_%)
 FUZZ_SECONDS ?= 60
 FUZZ_ARGS    ?=
 
-.PHONY: sanitize sanitize-build fuzz fuzz-smoke fuzz-build check-reliability
+.PHONY: sanitize sanitize-build fuzz fuzz-smoke fuzz-build check-reliability mutate
+
+mutate:
+	@tools/ensure-deps build check
+	@tools/mutate $(BUILD)
 
 # ------------------------------------------------------------ sanitizers
 
@@ -115,6 +122,7 @@ check-reliability:
 	@rc=0; \
 	$(MAKE) --no-print-directory sanitize || rc=1; \
 	$(MAKE) --no-print-directory fuzz-smoke || rc=1; \
+	$(MAKE) --no-print-directory mutate || rc=1; \
 	if [ $$rc -ne 0 ]; then echo "check-reliability: FAILED"; else echo "check-reliability: OK"; fi; \
 	exit $$rc
 

@@ -3,6 +3,8 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "world.h"
+
 int near_rel (double a, double b, double tol)
 {
   double scale = fabs (a) > fabs (b) ? fabs (a) : fabs (b);
@@ -70,26 +72,79 @@ void world_momentum (const carom_world *world, double *px, double *py, double *l
   free (ids);
 }
 
+/* FNV-1a over raw bytes. */
+static uint64_t mix (uint64_t h, const void *p, size_t n)
+{
+  const unsigned char *bytes = p;
+  size_t k;
+  for (k = 0; k < n; ++k)
+    h = (h ^ bytes[k]) * 1099511628211ull;
+  return h;
+}
+
 uint64_t world_state_hash (const carom_world *world)
 {
-  int32_t count = carom_world_body_count (world);
-  carom_body_id *ids = malloc ((size_t) (count > 0 ? count : 1) * sizeof *ids);
-  int32_t n, i;
   uint64_t h = 1469598103934665603ull;
-  assert_non_null (ids);
-  n = carom_world_get_bodies (world, ids, count);
-  for (i = 0; i < n; ++i)
+  int32_t i, j;
+  /* the settings and every effect's state */
+  h = mix (h, &world->gravity, sizeof world->gravity);
+  h = mix (h, &world->def.restitution, sizeof world->def.restitution);
+  h = mix (h, &world->def.friction, sizeof world->def.friction);
+  h = mix (h, &world->central.active, sizeof world->central.active);
+  h = mix (h, &world->central.center, sizeof world->central.center);
+  h = mix (h, &world->central.gm, sizeof world->central.gm);
+  h = mix (h, &world->central.softening2, sizeof world->central.softening2);
+  h = mix (h, &world->damping_linear, sizeof world->damping_linear);
+  h = mix (h, &world->damping_angular, sizeof world->damping_angular);
+  h = mix (h, &world->sleeping, sizeof world->sleeping);
+  h = mix (h, &world->continuous, sizeof world->continuous);
+  /* every live body: its id, state, material and sleep */
+  for (i = 0; i < world->slot_count; ++i)
     {
-      double s[6];
-      size_t k;
-      const unsigned char *bytes = (const unsigned char *) s;
-      carom_body_get_position (world, ids[i], &s[0], &s[1]);
-      carom_body_get_angle (world, ids[i], &s[2]);
-      carom_body_get_velocity (world, ids[i], &s[3], &s[4]);
-      carom_body_get_spin (world, ids[i], &s[5]);
-      for (k = 0; k < sizeof s; ++k)
-        h = (h ^ bytes[k]) * 1099511628211ull;
+      const body *b = &world->bodies[i];
+      carom_body_id id;
+      if (!b->alive)
+        continue;
+      id = body_id_of (world, i);
+      h = mix (h, &id, sizeof id);
+      h = mix (h, &b->p, sizeof b->p);
+      h = mix (h, &b->angle, sizeof b->angle);
+      h = mix (h, &b->v, sizeof b->v);
+      h = mix (h, &b->w, sizeof b->w);
+      h = mix (h, &b->inv_mass, sizeof b->inv_mass);
+      h = mix (h, &b->inv_inertia, sizeof b->inv_inertia);
+      h = mix (h, &b->restitution, sizeof b->restitution);
+      h = mix (h, &b->friction, sizeof b->friction);
+      h = mix (h, &b->fixed_rotation, sizeof b->fixed_rotation);
+      h = mix (h, &b->bullet, sizeof b->bullet);
+      h = mix (h, &b->asleep, sizeof b->asleep);
+      h = mix (h, &b->sleep_time, sizeof b->sleep_time);
     }
-  free (ids);
+  /* every contact, with what it carries to the next step */
+  for (i = 0; i < world->contacts.count; ++i)
+    {
+      const contact *k = &world->contacts.list[i];
+      h = mix (h, &k->a, sizeof k->a);
+      h = mix (h, &k->b, sizeof k->b);
+      h = mix (h, &k->piece_a, sizeof k->piece_a);
+      h = mix (h, &k->piece_b, sizeof k->piece_b);
+      h = mix (h, &k->count, sizeof k->count);
+      h = mix (h, &k->computed_at, sizeof k->computed_at);
+      for (j = 0; j < k->count; ++j)
+        {
+          const contact_point *p = &k->points[j];
+          h = mix (h, &p->point, sizeof p->point);
+          h = mix (h, &p->normal, sizeof p->normal);
+          h = mix (h, &p->depth, sizeof p->depth);
+          h = mix (h, &p->feature, sizeof p->feature);
+          h = mix (h, &p->normal_impulse, sizeof p->normal_impulse);
+          h = mix (h, &p->tangent_impulse, sizeof p->tangent_impulse);
+          h = mix (h, &p->normal_mass, sizeof p->normal_mass);
+          h = mix (h, &p->tangent_mass, sizeof p->tangent_mass);
+          h = mix (h, &p->local_a, sizeof p->local_a);
+          h = mix (h, &p->local_b, sizeof p->local_b);
+          h = mix (h, &p->local_normal, sizeof p->local_normal);
+        }
+    }
   return h;
 }

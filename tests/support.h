@@ -46,8 +46,10 @@ int world_teardown (void **state);
 
 /* Total kinetic energy (translational and rotational) of all bodies. */
 double world_kinetic_energy (const carom_world *world);
-/* FNV-1a hash of every body's position, angle, velocity and spin: equal
- * only for bit-identical states. */
+/* FNV-1a hash of the whole state a step depends on: settings and effects,
+ * every live body (id, pose, velocities, inverse masses, materials, sleep),
+ * every contact with the impulses it carries to the next step and its
+ * manifold's reuse data. Equal only for bit-identical states. */
 uint64_t world_state_hash (const carom_world *world);
 /* Total linear momentum and angular momentum about the origin. */
 void world_momentum (const carom_world *world, double *px, double *py, double *l);

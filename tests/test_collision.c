@@ -276,6 +276,70 @@ static void test_restitution_scales_separation_speed (void **state)
   carom_world_destroy (w);
 }
 
+/* Unequal materials, restitution (docs/physics.md: the larger e of the
+ * two): two circles with their own e, 0.3 and 0.9, in either order and with
+ * a world default between them, separate at 0.9 times their approach. */
+static void test_restitution_mixing_takes_the_larger (void **state)
+{
+  int order;
+  (void) state;
+  for (order = 0; order < 2; ++order)
+    {
+      carom_world *w = new_world (0.5);
+      carom_body_def d;
+      carom_body_id a, b;
+      double va, vb;
+      carom_body_def_init (&d, sizeof d);
+      d.x = -1.0, d.vx = 3.0, d.restitution = order ? 0.9 : 0.3;
+      assert_status (carom_world_add_circle (w, &d, 0.4, &a), CAROM_OK);
+      d.x = 1.0, d.vx = -1.0, d.restitution = order ? 0.3 : 0.9;
+      assert_status (carom_world_add_circle (w, &d, 0.4, &b), CAROM_OK);
+      run_collision (w, 1000);
+      carom_body_get_velocity (w, a, &va, NULL);
+      carom_body_get_velocity (w, b, &vb, NULL);
+      assert_near_rel (vb - va, 0.9 * 4.0, 1e-12);
+      carom_world_destroy (w);
+    }
+}
+
+/* Unequal materials, friction (the geometric mean of the two mu): a box
+ * sliding on a static floor, mu 0.2 on the box and 0.8 on the floor, in
+ * either order, decelerates at sqrt(0.2 0.8) g = 0.4 g (the larger would
+ * give 0.8 g, the smaller 0.2 g, the arithmetic mean 0.5 g). */
+static void test_friction_mixing_is_the_geometric_mean (void **state)
+{
+  int order;
+  (void) state;
+  for (order = 0; order < 2; ++order)
+    {
+      carom_world *w = NULL;
+      carom_world_def def;
+      carom_body_def d;
+      carom_body_id box;
+      double v0, v1;
+      int step;
+      carom_world_def_init (&def, sizeof def);
+      def.gravity_y = -10.0;
+      assert_status (carom_world_init (&w, &def), CAROM_OK);
+      carom_body_def_init (&d, sizeof d);
+      d.type = CAROM_STATIC, d.y = -0.5, d.friction = order ? 0.2 : 0.8;
+      assert_status (carom_world_add_box (w, &d, 200, 1, NULL), CAROM_OK);
+      carom_body_def_init (&d, sizeof d);
+      d.y = 0.5, d.friction = order ? 0.8 : 0.2;
+      assert_status (carom_world_add_box (w, &d, 1, 1, &box), CAROM_OK);
+      for (step = 0; step < 30; ++step) /* settle */
+        assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+      assert_status (carom_body_set_velocity (w, box, 5.0, 0.0), CAROM_OK);
+      assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+      carom_body_get_velocity (w, box, &v0, NULL);
+      for (step = 0; step < 30; ++step)
+        assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+      carom_body_get_velocity (w, box, &v1, NULL);
+      assert_near_rel ((v0 - v1) / (30.0 / 60.0), 0.4 * 10.0, 1e-3);
+      carom_world_destroy (w);
+    }
+}
+
 /* A box dropped flat on a static floor comes to rest on it, without
  * jitter, sinking no more than the slop. */
 static void test_box_rests_on_floor (void **state)
@@ -365,6 +429,8 @@ int main (void)
     cmocka_unit_test (test_off_centre_elastic_conserves_energy_and_momentum),
     cmocka_unit_test (test_inelastic_relative_normal_velocity_is_zero),
     cmocka_unit_test (test_restitution_scales_separation_speed),
+    cmocka_unit_test (test_restitution_mixing_takes_the_larger),
+    cmocka_unit_test (test_friction_mixing_is_the_geometric_mean),
     cmocka_unit_test (test_box_rests_on_floor),
     cmocka_unit_test (test_u_shape_catches_box_in_notch),
   };

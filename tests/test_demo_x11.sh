@@ -21,6 +21,7 @@ LIMIT=${DEMO_X11_TIMEOUT:-180}   # seconds for the whole test
 passed=0
 failed=0
 pass () { passed=$((passed + 1)); echo "ok   $*"; }
+skip () { skipped=$((skipped + 1)); echo "skip $*"; }
 fail () { failed=$((failed + 1)); echo "FAIL $*"; }
 
 xvfb_pid=
@@ -46,7 +47,7 @@ cleanup () {
   [ -z "$keep" ] && rm -rf "$OUT"
 }
 finish () {
-  echo "demo x11: $passed passed, $failed failed"
+  echo "demo x11: $passed passed, $failed failed, ${skipped:-0} skipped"
   cleanup
   # an explicit status: a bare exit in a trap keeps the status from before it
   if [ "$failed" -eq 0 ]; then exit 0; fi
@@ -276,7 +277,7 @@ if command -v compare >/dev/null 2>&1; then
   if [ "$ae" = 0 ]; then pass "the window shows exactly what --screenshot saves"
   else fail "window dump and --screenshot differ (AE: $ae)"; fi
 else
-  echo "skip window vs --screenshot comparison: no ImageMagick"
+  skip "window vs --screenshot comparison: no ImageMagick"
 fi
 
 printf 'gravity 0 -10\nbox -1 1 at 0 0\n' >"$OUT/bad.scene"

@@ -167,6 +167,49 @@ static void test_extreme_mass_ratio_stays_finite (void **state)
   carom_world_destroy (w);
 }
 
+/* An elastic cluster: 60 polygons (boxes, pentagons, triangles) in a closed
+ * 12 x 12 box, no gravity, e = 1, speeds up to 5, 600 steps. Bound: the
+ * kinetic energy within 1e-4 of its start at every step (impacts on several
+ * sides at once included: docs/stability.md). */
+static void test_elastic_cluster_keeps_its_energy (void **state)
+{
+  carom_world *w = world_with (0, 0, 1.0, 0);
+  carom_body_def d;
+  double e0, worst = 0.0;
+  int i, step;
+  (void) state;
+  add_static_box (w, 0, -6.5, 14, 1);
+  add_static_box (w, 0, 6.5, 14, 1);
+  add_static_box (w, -6.5, 0, 1, 12);
+  add_static_box (w, 6.5, 0, 1, 12);
+  for (i = 0; i < 60; ++i)
+    {
+      carom_body_def_init (&d, sizeof d);
+      d.x = -5.0 + (i % 8) * 1.4, d.y = -5.0 + (i / 8) * 1.4, d.angle = 0.7 * i;
+      d.vx = ((i * 7) % 11) * 0.9 - 4.5, d.vy = ((i * 5) % 9) * 1.1 - 4.4, d.spin = ((i * 3) % 5) - 2.0;
+      if (i % 3 == 0)
+        assert_status (carom_world_add_box (w, &d, 0.8, 0.5, NULL), CAROM_OK);
+      else if (i % 3 == 1)
+        assert_status (carom_world_add_regular (w, &d, 5, 0.45, NULL), CAROM_OK);
+      else
+        {
+          const double tri[] = {0, 0, 0.7, 0.1, 0.2, 0.6};
+          assert_status (carom_world_add_polygon (w, &d, tri, 3, NULL), CAROM_OK);
+        }
+    }
+  e0 = world_kinetic_energy (w);
+  for (step = 0; step < 600; ++step)
+    {
+      double e;
+      carom_world_update (w, 1.0 / 60);
+      e = fabs (world_kinetic_energy (w) / e0 - 1.0);
+      worst = e > worst ? e : worst;
+    }
+  print_message ("elastic cluster: largest energy drift over 600 steps %.3g\n", worst);
+  assert_true (worst < 1e-4);
+  carom_world_destroy (w);
+}
+
 static void test_stack_far_from_origin_1e6 (void **state)
 {
   (void) state;
@@ -528,6 +571,7 @@ int main (void)
     cmocka_unit_test (test_mass_ratio_1000_both_ways),
     cmocka_unit_test (test_stack_far_from_origin_1e6),
     cmocka_unit_test (test_extreme_mass_ratio_stays_finite),
+    cmocka_unit_test (test_elastic_cluster_keeps_its_energy),
     cmocka_unit_test (test_bullet_300_never_passes_thin_wall),
     cmocka_unit_test (test_overlap_recovery_adds_no_energy),
     cmocka_unit_test (test_degenerate_steps_stay_finite),

@@ -151,6 +151,92 @@ static void test_two_worlds_are_independent (void **state)
   carom_world_destroy (b);
 }
 
+/* A world with contacts of every kind and every effect on: a stack, a
+ * bouncing pair, friction, damping, sleeping, central gravity. */
+static carom_world *busy_world (void)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_body_def d;
+  int i;
+  carom_world_def_init (&def, sizeof def);
+  def.gravity_y = -10.0;
+  def.friction = 0.4;
+  def.restitution = 0.3;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  assert_status (carom_world_set_damping (w, 0.05, 0.05), CAROM_OK);
+  assert_status (carom_world_set_sleeping (w, 1), CAROM_OK);
+  assert_status (carom_world_set_central_gravity (w, 0, -50, 100, 1), CAROM_OK);
+  carom_body_def_init (&d, sizeof d);
+  d.type = CAROM_STATIC, d.y = -0.5;
+  assert_status (carom_world_add_box (w, &d, 40, 1, NULL), CAROM_OK);
+  for (i = 0; i < 6; ++i)
+    {
+      carom_body_def_init (&d, sizeof d);
+      d.x = 0.02 * i, d.y = 0.5 + 1.01 * i, d.angle = 0.01 * i;
+      assert_status (carom_world_add_box (w, &d, 1, 1, NULL), CAROM_OK);
+    }
+  carom_body_def_init (&d, sizeof d);
+  d.x = -5, d.y = 3, d.vx = 4, d.restitution = 0.9;
+  assert_status (carom_world_add_circle (w, &d, 0.4, NULL), CAROM_OK);
+  d.x = 5, d.vx = -4, d.spin = 2;
+  assert_status (carom_world_add_regular (w, &d, 5, 0.6, NULL), CAROM_OK);
+  return w;
+}
+
+/* The same world stepped alone and stepped in turn with another one (with
+ * one contact, so anything counted across worlds changes parity): the same
+ * state, bit for bit, at every step, and the other one too. */
+static void test_two_busy_worlds_interleaved_equal_alone (void **state)
+{
+  carom_world *alone = busy_world (), *mixed = busy_world (), *other = NULL, *other_alone = NULL;
+  carom_world_def def;
+  carom_body_def d;
+  int step, k, most = 0, asleep = 0;
+  (void) state;
+  carom_world_def_init (&def, sizeof def);
+  def.gravity_y = -3.0;
+  for (k = 0; k < 2; ++k)
+    {
+      carom_world **w = k ? &other_alone : &other;
+      assert_status (carom_world_init (w, &def), CAROM_OK);
+      carom_body_def_init (&d, sizeof d);
+      d.type = CAROM_STATIC, d.y = -0.5;
+      assert_status (carom_world_add_box (*w, &d, 10, 1, NULL), CAROM_OK);
+      carom_body_def_init (&d, sizeof d);
+      d.y = 0.6, d.spin = 0.5;
+      assert_status (carom_world_add_circle (*w, &d, 0.5, NULL), CAROM_OK);
+    }
+  for (step = 0; step < 300; ++step)
+    {
+      carom_body_id ids[16];
+      int32_t n, i;
+      assert_status (carom_world_update (alone, 1.0 / 60), CAROM_OK);
+      assert_status (carom_world_update (other_alone, 1.0 / 60), CAROM_OK);
+      most = carom_world_contact_count (alone) > most ? carom_world_contact_count (alone) : most;
+      n = carom_world_get_bodies (alone, ids, 16);
+      for (i = 0; i < n; ++i)
+        {
+          int32_t awake;
+          assert_status (carom_body_is_awake (alone, ids[i], &awake), CAROM_OK);
+          asleep += !awake;
+        }
+    }
+  for (step = 0; step < 300; ++step)
+    {
+      assert_status (carom_world_update (mixed, 1.0 / 60), CAROM_OK);
+      assert_status (carom_world_update (other, 1.0 / 60), CAROM_OK);
+    }
+  /* it did collide, and some of it slept; the other world has its one contact */
+  assert_true (most > 10 && asleep > 0 && carom_world_contact_count (other) == 1);
+  assert_true (world_state_hash (alone) == world_state_hash (mixed));
+  assert_true (world_state_hash (other_alone) == world_state_hash (other));
+  carom_world_destroy (alone);
+  carom_world_destroy (mixed);
+  carom_world_destroy (other);
+  carom_world_destroy (other_alone);
+}
+
 static void test_get_bodies (void **state)
 {
   carom_world *w = *state;
@@ -210,6 +296,7 @@ int main (void)
     cmocka_unit_test_setup_teardown (test_projectile_matches_closed_form, world_setup, world_teardown),
     cmocka_unit_test (test_free_fall_with_substeps),
     cmocka_unit_test (test_two_worlds_are_independent),
+    cmocka_unit_test (test_two_busy_worlds_interleaved_equal_alone),
     cmocka_unit_test_setup_teardown (test_get_bodies, world_setup, world_teardown),
   };
   return cmocka_run_group_tests_name ("world", tests, NULL, NULL);
