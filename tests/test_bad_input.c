@@ -883,6 +883,7 @@ static void test_magnitudes_beyond_the_limit_refused (void **state)
   carom_body_def d;
   carom_body_id id;
   double x, y;
+  uint64_t before;
   const double big = 1e101;
   assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
   d.x = big;
@@ -895,6 +896,8 @@ static void test_magnitudes_beyond_the_limit_refused (void **state)
   assert_status (carom_world_add_circle (w, &d, 1.0, NULL), CAROM_ERR_BAD_ARGUMENT);
   assert_int_equal (carom_world_body_count (w), 0);
   assert_status (carom_world_add_circle (w, NULL, 1.0, &id), CAROM_OK);
+  assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+  before = world_state_hash (w);
   assert_status (carom_body_set_position (w, id, 0.0, -big), CAROM_ERR_BAD_ARGUMENT);
   assert_status (carom_body_set_angle (w, id, DBL_MAX), CAROM_ERR_BAD_ARGUMENT);
   assert_status (carom_body_set_velocity (w, id, big, 0.0), CAROM_ERR_BAD_ARGUMENT);
@@ -903,6 +906,8 @@ static void test_magnitudes_beyond_the_limit_refused (void **state)
   assert_status (carom_world_set_central_gravity (w, big, 0.0, 1.0, 0.0), CAROM_ERR_BAD_ARGUMENT);
   assert_status (carom_world_set_central_gravity (w, 0.0, 0.0, big, 0.0), CAROM_ERR_BAD_ARGUMENT);
   assert_status (carom_world_set_damping (w, big, 0.0), CAROM_ERR_BAD_ARGUMENT);
+  /* every refusal changed nothing at all: bodies, settings, effects */
+  assert_true (world_state_hash (w) == before);
   assert_status (carom_body_get_position (w, id, &x, &y), CAROM_OK);
   assert_true (x == 0.0 && y == 0.0);
   assert_status (carom_world_get_gravity (w, &x, &y), CAROM_OK);

@@ -60,24 +60,29 @@ static carom_body_id build_stack (carom_world *w, int n, double size, double ox,
 }
 
 /* Case 1 (and 5, 6): a stack of 10 boxes, 10 s at 60 Hz. Bound: after it
- * settles (1 s), the top box moves less than 1% of its size, sideways less
- * than 0.1%. Checked at size 1 at the origin, at 1e-3 and 1e3 scale (with
- * gravity scaled), and at (1e6, 1e6). */
+ * settles (1 s), the top box's largest excursion from where it settled is
+ * under 1% of its size, sideways under 0.1%. Checked at size 1 at the
+ * origin, at 1e-3 and 1e3 scale (with gravity scaled), and at (1e6, 1e6). */
 static void run_stack_case (double size, double ox, double oy)
 {
   carom_world *w = world_with (0, -10 * size, 0, 0.6);
   carom_body_id top = build_stack (w, 10, size, ox, oy);
-  double x0 = 0, y0 = 0, x, y;
+  double x0 = 0, y0 = 0, x, y, up = 0.0, side = 0.0;
   int step;
   for (step = 0; step < 600; ++step)
     {
       assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+      carom_body_get_position (w, top, &x, &y);
       if (step == 59)
-        carom_body_get_position (w, top, &x0, &y0);
+        x0 = x, y0 = y;
+      if (step > 59)
+        {
+          up = fabs (y - y0) > up ? fabs (y - y0) : up;
+          side = fabs (x - x0) > side ? fabs (x - x0) : side;
+        }
     }
-  carom_body_get_position (w, top, &x, &y);
-  assert_true (fabs (y - y0) < 0.01 * size);
-  assert_true (fabs (x - x0) < 0.001 * size);
+  assert_true (up < 0.01 * size);
+  assert_true (side < 0.001 * size);
   /* and it stands where it was built, within the slop of each layer */
   assert_true (fabs (x - ox) < 0.001 * size);
   assert_true (fabs (y - (oy + 9.5 * size)) < 10 * 0.01 * size);

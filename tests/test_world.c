@@ -1,6 +1,8 @@
 /* The world's lifecycle, settings, and free motion against closed forms. */
 #include "support.h"
 
+#include <stdlib.h>
+
 #include <math.h>
 #include <string.h>
 
@@ -237,6 +239,64 @@ static void test_two_busy_worlds_interleaved_equal_alone (void **state)
   carom_world_destroy (other_alone);
 }
 
+/* An allocator that only counts. */
+typedef struct counting {
+  long calls;
+} counting;
+
+static void *count_alloc (size_t size, void *user)
+{
+  ((counting *) user)->calls++;
+  return malloc (size);
+}
+
+static void count_free (void *ptr, size_t size, void *user)
+{
+  (void) size, (void) user;
+  free (ptr);
+}
+
+/* No allocation in a steady step: once the contacts are there, an update
+ * asks the allocator for nothing (a pile of 30 boxes and circles settling
+ * on a floor, then 300 more steps with the same contacts). */
+static void test_steady_steps_allocate_nothing (void **state)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_body_def d;
+  counting c = { 0 };
+  long settled;
+  int i, step, contacts;
+  (void) state;
+  carom_world_def_init (&def, sizeof def);
+  def.gravity_y = -10.0;
+  def.friction = 0.5;
+  def.allocator.alloc = count_alloc, def.allocator.free = count_free, def.allocator.user = &c;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  carom_body_def_init (&d, sizeof d);
+  d.type = CAROM_STATIC, d.y = -0.5;
+  assert_status (carom_world_add_box (w, &d, 40, 1, NULL), CAROM_OK);
+  for (i = 0; i < 30; ++i)
+    {
+      carom_body_def_init (&d, sizeof d);
+      d.x = -3.0 + (i % 6) * 1.1, d.y = 0.5 + (i / 6) * 1.05;
+      if (i % 2)
+        assert_status (carom_world_add_box (w, &d, 1, 1, NULL), CAROM_OK);
+      else
+        assert_status (carom_world_add_circle (w, &d, 0.5, NULL), CAROM_OK);
+    }
+  for (step = 0; step < 300; ++step)
+    assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+  settled = c.calls;
+  contacts = carom_world_contact_count (w);
+  for (step = 0; step < 300; ++step)
+    assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+  assert_int_equal (carom_world_contact_count (w), contacts);
+  assert_true (contacts > 30);
+  assert_int_equal (c.calls, settled);
+  carom_world_destroy (w);
+}
+
 static void test_get_bodies (void **state)
 {
   carom_world *w = *state;
@@ -297,6 +357,7 @@ int main (void)
     cmocka_unit_test (test_free_fall_with_substeps),
     cmocka_unit_test (test_two_worlds_are_independent),
     cmocka_unit_test (test_two_busy_worlds_interleaved_equal_alone),
+    cmocka_unit_test (test_steady_steps_allocate_nothing),
     cmocka_unit_test_setup_teardown (test_get_bodies, world_setup, world_teardown),
   };
   return cmocka_run_group_tests_name ("world", tests, NULL, NULL);
