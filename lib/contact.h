@@ -45,6 +45,8 @@ typedef struct contact {
   int32_t first_point;        /* index of points[0] among all points */
   int32_t block;              /* two points solved as one 2x2 problem */
   int32_t met;                /* pushed this step (its approach is measured) */
+  int32_t fine;               /* its bodies fall more than the slop in a
+                                 sub-step: solved until converged */
   double k11, k12, k22;       /* its matrix (eq. 3.23's denominators and their coupling) */
   xform computed_at;          /* b's pose in a's frame when the points were
                                  last computed by the narrow phase */
@@ -61,6 +63,7 @@ typedef struct contacts {
   int32_t *table;        /* open-addressing hash over `old` */
   int32_t table_cap;
   int32_t point_count;
+  int32_t fine_count;    /* contacts marked fine this step */
   int out_of_memory;
 } contacts;
 

@@ -139,6 +139,7 @@ void contact_prepare (carom_world *world, const step_context *ctx)
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
   int32_t i, j;
+  c->fine_count = 0;
   for (i = 0; i < c->count; ++i)
     {
       contact *k = &c->list[i];
@@ -148,6 +149,10 @@ void contact_prepare (carom_world *world, const step_context *ctx)
       a->constrained = b->constrained = 1;
       k->max_push = CONTACT_PUSH_PER_STEP * reach * ctx->inv_dt;
       k->met = 0;
+      /* a body falls 0.5 g h^2 in a sub-step with nothing to hold it: more
+       * than the slop, and one pass cannot keep it resting */
+      k->fine = 0.5 * ctx->accel * ctx->h * ctx->h > k->slop;
+      c->fine_count += k->fine;
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
@@ -230,14 +235,17 @@ static double point_bias (const contact *k, const contact_point *p, const solver
   return bias < -k->max_push ? -k->max_push : bias;
 }
 
-static void solve_point (solver_body *a, solver_body *b, contact_point *p, double bias, double remaining)
+/* Returns the change of the point's normal speed. */
+static double solve_point (solver_body *a, solver_body *b, contact_point *p, double bias, double remaining)
 {
   double vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
-  double acc = p->normal_impulse - p->normal_mass * (vn + bias);
+  double acc = p->normal_impulse - p->normal_mass * (vn + bias), d;
   if (acc < 0.0)
     acc = 0.0;
-  apply_normal (a, b, p, acc - p->normal_impulse, remaining);
+  d = acc - p->normal_impulse;
+  apply_normal (a, b, p, d, remaining);
   p->normal_impulse = acc;
+  return p->normal_mass > 0.0 ? fabs (d) / p->normal_mass : 0.0;
 }
 
 int contact_lcp2 (double k11, double k12, double k22, double b1, double b2, double *x1, double *x2)
@@ -263,7 +271,8 @@ int contact_lcp2 (double k11, double k12, double k22, double b1, double b2, doub
 /* Both points of a block at once: the accumulated impulses x >= 0 with
  * K x + (vn + bias - K x_now) >= 0, complementary. Returns 0 when rounding
  * leaves no consistent case (the caller solves the points one at a time). */
-static int solve_block (solver_body *a, solver_body *b, contact *k, const double *bias, double remaining)
+static int solve_block (solver_body *a, solver_body *b, contact *k, const double *bias, double remaining,
+                        double *change)
 {
   contact_point *p1 = &k->points[0], *p2 = &k->points[1];
   double x1 = p1->normal_impulse, x2 = p2->normal_impulse, y1, y2;
@@ -275,6 +284,10 @@ static int solve_block (solver_body *a, solver_body *b, contact *k, const double
   apply_normal (a, b, p2, y2 - x2, remaining);
   p1->normal_impulse = y1;
   p2->normal_impulse = y2;
+  {
+    double v1 = fabs (k->k11 * (y1 - x1) + k->k12 * (y2 - x2)), v2 = fabs (k->k12 * (y1 - x1) + k->k22 * (y2 - x2));
+    *change = v1 > v2 ? v1 : v2;
+  }
   return 1;
 }
 
@@ -324,26 +337,35 @@ static void solve_friction (solver_body *a, solver_body *b, contact *k, double r
     }
 }
 
-void contact_solve (carom_world *world, const step_context *ctx, int32_t kicks, int use_bias, double remaining)
+double contact_solve (carom_world *world, const step_context *ctx, int32_t kicks, int use_bias, double remaining,
+                      int only_fine)
 {
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
+  double most = 0.0;
   int32_t i, j;
   for (i = 0; i < c->count; ++i)
     {
       contact *k = &c->list[i];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
-      double bias[MANIFOLD_MAX_POINTS];
+      double bias[MANIFOLD_MAX_POINTS], change = 0.0;
+      if (only_fine && !k->fine)
+        continue;
       for (j = 0; j < k->count; ++j)
         bias[j] = point_bias (k, &k->points[j], a, b, ctx, use_bias);
-      if (!(k->block && solve_block (a, b, k, bias, remaining)))
+      if (!(k->block && solve_block (a, b, k, bias, remaining, &change)))
         for (j = 0; j < k->count; ++j)
-          solve_point (a, b, &k->points[j], bias[j], remaining);
+          {
+            double d = solve_point (a, b, &k->points[j], bias[j], remaining);
+            change = d > change ? d : change;
+          }
+      most = change > most ? change : most;
       if (!k->met)
         note_meeting (k, a, b, ctx, kicks);
       if (k->friction > 0.0)
         solve_friction (a, b, k, remaining);
     }
+  return most;
 }
 
 /* Whether a point takes part in restitution: some impulse of the step acted

@@ -20,9 +20,11 @@ void contact_warm_start (struct carom_world *world, double remaining);
 /* One pass over every contact: with use_bias, overlap beyond the slop is
  * pushed out; without (relax), only approach is removed, which takes the
  * push's velocity back. `kicks` is how many gravity kicks the sub-steps have
- * given so far. */
-void contact_solve (struct carom_world *world, const step_context *ctx, int32_t kicks, int use_bias,
-                    double remaining);
+ * given so far. With only_fine, only the contacts of bodies so small that a
+ * sub-step's fall exceeds their slop are solved (contact.fine). Returns the
+ * largest change of a point's normal speed. */
+double contact_solve (struct carom_world *world, const step_context *ctx, int32_t kicks, int use_bias,
+                      double remaining, int only_fine);
 /* After the sub-steps: points that were struck leave at e times the speed
  * they met with (eq. 3.18). */
 void contact_restitution (struct carom_world *world, const step_context *ctx);

@@ -25,6 +25,8 @@ typedef struct step_context {
    * gravity, where every approach bounces) */
   double restitution_threshold;
   double push_rate;      /* overlap pushed out per unit time: position_correction / h */
+  double converged;      /* a solve pass that changes no normal speed by more
+                            than this ends the sub-step's passes (solver.c) */
 } step_context;
 
 struct carom_world;

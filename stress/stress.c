@@ -179,6 +179,7 @@ int main (void)
   stack ("tower of 30 unit boxes, friction 0.6", 30, 1.0, 1.0, 0.6);
   stack ("tower of 15 unit boxes, no friction", 15, 1.0, 1.0, 0.0);
   stack ("40 planks 2 x 0.5, friction 0.6", 40, 2.0, 0.5, 0.6);
+  stack ("ten 1 cm boxes, friction 0.6", 10, 0.01, 0.01, 0.6);
   printf ("stress: %d passed, %d failed\n", passed, failed);
   return failed ? 1 : 0;
 }

@@ -215,6 +215,32 @@ static void test_elastic_cluster_keeps_its_energy (void **state)
   carom_world_destroy (w);
 }
 
+/* Small boxes under full gravity: five 1 cm boxes, g = 9.81, dt 1/60 (a free
+ * one falls a quarter of its height per step), built exactly touching.
+ * Bound: over 2 s the top's largest sag stays under 1% of the stack's
+ * height, and it moves no more than that sideways. */
+static void test_small_boxes_under_full_gravity_stand (void **state)
+{
+  carom_world *w = world_with (0, -9.81, 0, 0.6);
+  carom_body_id top;
+  double x0, y0, x, y, sag = 0.0, side = 0.0;
+  int step;
+  (void) state;
+  top = build_stack (w, 5, 0.01, 0.0, 0.0);
+  carom_body_get_position (w, top, &x0, &y0);
+  for (step = 0; step < 120; ++step)
+    {
+      assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+      carom_body_get_position (w, top, &x, &y);
+      sag = y0 - y > sag ? y0 - y : sag;
+      side = fabs (x - x0) > side ? fabs (x - x0) : side;
+    }
+  assert_true (sag < 0.01 * 5 * 0.01);
+  assert_true (side < 0.01 * 5 * 0.01);
+  assert_world_finite (w);
+  carom_world_destroy (w);
+}
+
 static void test_stack_far_from_origin_1e6 (void **state)
 {
   (void) state;
@@ -576,6 +602,7 @@ int main (void)
     cmocka_unit_test (test_mass_ratio_1000_both_ways),
     cmocka_unit_test (test_stack_far_from_origin_1e6),
     cmocka_unit_test (test_extreme_mass_ratio_stays_finite),
+    cmocka_unit_test (test_small_boxes_under_full_gravity_stand),
     cmocka_unit_test (test_elastic_cluster_keeps_its_energy),
     cmocka_unit_test (test_bullet_300_never_passes_thin_wall),
     cmocka_unit_test (test_overlap_recovery_adds_no_energy),
