@@ -182,20 +182,29 @@ void contact_prepare (carom_world *world, const step_context *ctx)
 /* A normal impulse applied at a point, `remaining` before the end of the
  * step: with every other, it adds up to what the contact gave over the whole
  * step, and to how far that moved the bodies by the end of it (the moment,
- * see contact_time_of_impact). */
-static inline void apply_normal (solver_body *a, solver_body *b, contact_point *p, double lambda, double remaining)
+ * see contact_time_of_impact). Only bouncy contacts (track) need either:
+ * restitution and the time of impact leave the others alone. */
+static inline void apply_normal (solver_body *a, solver_body *b, contact_point *p, double lambda, double remaining,
+                                 int track)
 {
   contact_push (a, b, p->normal, p->rn_a, p->rn_b, lambda);
-  p->total_impulse += lambda;
-  p->normal_moment += lambda * remaining;
+  if (track)
+    {
+      p->total_impulse += lambda;
+      p->normal_moment += lambda * remaining;
+    }
 }
 
 /* The same along the tangent (friction). */
-static inline void apply_tangent (solver_body *a, solver_body *b, contact_point *p, double lambda, double remaining)
+static inline void apply_tangent (solver_body *a, solver_body *b, contact_point *p, double lambda, double remaining,
+                                  int track)
 {
   contact_push (a, b, v2_perp (p->normal), p->rt_a, p->rt_b, lambda);
-  p->tangent_total += lambda;
-  p->tangent_moment += lambda * remaining;
+  if (track)
+    {
+      p->tangent_total += lambda;
+      p->tangent_moment += lambda * remaining;
+    }
 }
 
 void contact_warm_start (carom_world *world, double remaining)
@@ -211,9 +220,9 @@ void contact_warm_start (carom_world *world, double remaining)
         {
           contact_point *p = &k->points[j];
           if (p->normal_impulse != 0.0)
-            apply_normal (a, b, p, p->normal_impulse, remaining);
+            apply_normal (a, b, p, p->normal_impulse, remaining, k->restitution > 0.0);
           if (p->tangent_impulse != 0.0)
-            apply_tangent (a, b, p, p->tangent_impulse, remaining);
+            apply_tangent (a, b, p, p->tangent_impulse, remaining, k->restitution > 0.0);
         }
     }
 }
@@ -236,37 +245,19 @@ static double point_bias (const contact *k, const contact_point *p, const solver
 }
 
 /* Returns the change of the point's normal speed. */
-static double solve_point (solver_body *a, solver_body *b, contact_point *p, double bias, double remaining)
+static double solve_point (solver_body *a, solver_body *b, contact_point *p, double bias, double remaining,
+                           int track)
 {
   double vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
   double acc = p->normal_impulse - p->normal_mass * (vn + bias), d;
   if (acc < 0.0)
     acc = 0.0;
   d = acc - p->normal_impulse;
-  apply_normal (a, b, p, d, remaining);
+  apply_normal (a, b, p, d, remaining, track);
   p->normal_impulse = acc;
   return p->normal_mass > 0.0 ? fabs (d) / p->normal_mass : 0.0;
 }
 
-int contact_lcp2 (double k11, double k12, double k22, double b1, double b2, double *x1, double *x2)
-{
-  double det = k11 * k22 - k12 * k12;
-  if (det > 1e-12 * k11 * k22)
-    {
-      *x1 = (-k22 * b1 + k12 * b2) / det;
-      *x2 = (k12 * b1 - k11 * b2) / det;
-      if (*x1 >= 0.0 && *x2 >= 0.0)
-        return 1;
-    }
-  *x1 = -b1 / k11, *x2 = 0.0;
-  if (*x1 >= 0.0 && k12 * *x1 + b2 >= 0.0)
-    return 1;
-  *x1 = 0.0, *x2 = -b2 / k22;
-  if (*x2 >= 0.0 && k12 * *x2 + b1 >= 0.0)
-    return 1;
-  *x1 = *x2 = 0.0;
-  return b1 >= 0.0 && b2 >= 0.0;
-}
 
 /* Both points of a block at once: the accumulated impulses x >= 0 with
  * K x + (vn + bias - K x_now) >= 0, complementary. Returns 0 when rounding
@@ -280,8 +271,8 @@ static int solve_block (solver_body *a, solver_body *b, contact *k, const double
   double b2 = contact_speed (a, b, p2->normal, p2->rn_a, p2->rn_b) + bias[1] - (k->k12 * x1 + k->k22 * x2);
   if (!contact_lcp2 (k->k11, k->k12, k->k22, b1, b2, &y1, &y2))
     return 0;
-  apply_normal (a, b, p1, y1 - x1, remaining);
-  apply_normal (a, b, p2, y2 - x2, remaining);
+  apply_normal (a, b, p1, y1 - x1, remaining, k->restitution > 0.0);
+  apply_normal (a, b, p2, y2 - x2, remaining, k->restitution > 0.0);
   p1->normal_impulse = y1;
   p2->normal_impulse = y2;
   {
@@ -332,7 +323,7 @@ static void solve_friction (solver_body *a, solver_body *b, contact *k, double r
       limit = k->friction * p->normal_impulse;
       acc = p->tangent_impulse - p->tangent_mass * vt;
       acc = acc > limit ? limit : (acc < -limit ? -limit : acc);
-      apply_tangent (a, b, p, acc - p->tangent_impulse, remaining);
+      apply_tangent (a, b, p, acc - p->tangent_impulse, remaining, k->restitution > 0.0);
       p->tangent_impulse = acc;
     }
 }
@@ -356,7 +347,7 @@ double contact_solve (carom_world *world, const step_context *ctx, int32_t kicks
       if (!(k->block && solve_block (a, b, k, bias, remaining, &change)))
         for (j = 0; j < k->count; ++j)
           {
-            double d = solve_point (a, b, &k->points[j], bias[j], remaining);
+            double d = solve_point (a, b, &k->points[j], bias[j], remaining, k->restitution > 0.0);
             change = d > change ? d : change;
           }
       most = change > most ? change : most;
@@ -394,8 +385,8 @@ static int restitution_pair (solver_body *a, solver_body *b, contact *k)
               - (k->k12 * p1->total_impulse + k->k22 * p2->total_impulse);
   if (!k->block || !contact_lcp2 (k->k11, k->k12, k->k22, b1, b2, &x1, &x2))
     return 0;
-  apply_normal (a, b, p1, x1 - p1->total_impulse, 0.0);
-  apply_normal (a, b, p2, x2 - p2->total_impulse, 0.0);
+  apply_normal (a, b, p1, x1 - p1->total_impulse, 0.0, 1);
+  apply_normal (a, b, p2, x2 - p2->total_impulse, 0.0, 1);
   return 1;
 }
 
@@ -430,7 +421,7 @@ static double restitution_pass (solver_body *a, solver_body *b, contact *k, doub
         acc = 0.0;
       d = p->normal_mass > 0.0 ? fabs (acc - p->total_impulse) / p->normal_mass : 0.0;
       most = d > most ? d : most;
-      apply_normal (a, b, p, acc - p->total_impulse, 0.0);
+      apply_normal (a, b, p, acc - p->total_impulse, 0.0, 1);
     }
   return most;
 }

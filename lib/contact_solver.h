@@ -68,6 +68,25 @@ static inline double contact_separation (const solver_body *a, const solver_body
 /* Smallest x >= 0 with w = K x + b >= 0 and x . w = 0 for a symmetric 2x2 K
  * (both points active, the first, the second, neither). Returns 0 when
  * rounding leaves no consistent case. */
-int contact_lcp2 (double k11, double k12, double k22, double b1, double b2, double *x1, double *x2);
+static inline int contact_lcp2 (double k11, double k12, double k22, double b1, double b2, double *x1, double *x2)
+{
+  double det = k11 * k22 - k12 * k12;
+  if (det > 1e-12 * k11 * k22)
+    {
+      *x1 = (-k22 * b1 + k12 * b2) / det;
+      *x2 = (k12 * b1 - k11 * b2) / det;
+      if (*x1 >= 0.0 && *x2 >= 0.0)
+        return 1;
+    }
+  *x1 = -b1 / k11, *x2 = 0.0;
+  if (*x1 >= 0.0 && k12 * *x1 + b2 >= 0.0)
+    return 1;
+  *x1 = 0.0, *x2 = -b2 / k22;
+  if (*x2 >= 0.0 && k12 * *x2 + b1 >= 0.0)
+    return 1;
+  *x1 = *x2 = 0.0;
+  return b1 >= 0.0 && b2 >= 0.0;
+}
+
 
 #endif
