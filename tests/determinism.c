@@ -118,6 +118,6 @@ int main (int argc, char **argv)
       fprintf (stderr, "determinism: the mixed scene: %s\n", err.message);
       return 2;
     }
-  rc |= run ("mix", w, 900);
+  rc |= run ("mix", w, 240);
   return rc;
 }
