@@ -20,6 +20,7 @@ typedef struct contact_point {
   double tangent_mass;
   double adjusted;      /* separation at detection less (rb - ra) . n: the
                            separation is adjusted + (moved b - moved a) . n */
+  double push_impulse;  /* the push-out's pseudo-impulse in this sub-step */
   double approach;      /* normal relative speed the point met with (what
                            restitution reverses; see contact_solver.c) */
   double normal_impulse, tangent_impulse; /* accumulated in the sub-steps,

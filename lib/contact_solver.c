@@ -12,11 +12,11 @@
  *
  * Within a step the constraint is solved in two parts. In every sub-step
  * the impulses keep the points from approaching (eq. 3.23 with e = 0),
- * accumulated and clamped so contacts only push: a solve pass that also
- * pushes overlap beyond the slop out (a fraction position_correction of it
- * per sub-step), the motion, then a relax pass without the push, which
- * takes the push's velocity back, so position correction moves the bodies
- * but adds no kinetic energy (Catto's "soft step" with relax iterations).
+ * accumulated and clamped so contacts only push, in a pass before the
+ * motion and one after it; overlap beyond the slop is pushed out on
+ * separate pseudo-velocities (a fraction position_correction of it per
+ * sub-step) that move the bodies and are dropped, so position correction
+ * never changes a velocity and adds no kinetic energy (split impulses).
  * After the last sub-step, every point that was struck leaves at e times
  * the normal speed it met with (eq. 3.18): for an isolated contact the whole
  * step then applies exactly the impulse of eq. 3.23.
@@ -227,18 +227,23 @@ void contact_warm_start (carom_world *world, double remaining)
     }
 }
 
-/* The normal speed a point's impulse aims at in this pass, as -bias: a
- * speculative point (apart by s) may close its gap within the sub-step but
- * not pass it; an overlap beyond the slop is pushed out, a fraction
- * position_correction of it per sub-step, no faster than max_push; within
- * the slop, and in the relax pass, the point may not approach. */
-static double point_bias (const contact *k, const contact_point *p, const solver_body *a, const solver_body *b,
-                          const step_context *ctx, int use_bias)
+/* The normal speed a point's impulse aims at, as -bias: a speculative point
+ * (apart by s) may close its gap within the sub-step but not pass it; a
+ * touching or overlapping one may not approach. */
+static double point_bias (const contact_point *p, const solver_body *a, const solver_body *b, const step_context *ctx)
+{
+  double s = contact_separation (a, b, p);
+  return s > 0.0 ? s * ctx->inv_h : 0.0;
+}
+
+/* The push-out's target for a point, as -bias on its pseudo normal speed:
+ * an overlap beyond the slop is pushed out, a fraction position_correction
+ * of it per sub-step, no faster than max_push; 0 within the slop. */
+static double push_bias (const contact *k, const contact_point *p, const solver_body *a, const solver_body *b,
+                         const step_context *ctx)
 {
   double s = contact_separation (a, b, p), bias;
-  if (s > 0.0)
-    return s * ctx->inv_h;
-  if (!use_bias || s + k->slop >= 0.0)
+  if (s + k->slop >= 0.0)
     return 0.0;
   bias = ctx->push_rate * (s + k->slop);
   return bias < -k->max_push ? -k->max_push : bias;
@@ -328,8 +333,7 @@ static void solve_friction (solver_body *a, solver_body *b, contact *k, double r
     }
 }
 
-double contact_solve (carom_world *world, const step_context *ctx, int32_t kicks, int use_bias, double remaining,
-                      int only_fine)
+double contact_solve (carom_world *world, const step_context *ctx, int32_t kicks, double remaining, int only_fine)
 {
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
@@ -343,7 +347,7 @@ double contact_solve (carom_world *world, const step_context *ctx, int32_t kicks
       if (only_fine && !k->fine)
         continue;
       for (j = 0; j < k->count; ++j)
-        bias[j] = point_bias (k, &k->points[j], a, b, ctx, use_bias);
+        bias[j] = point_bias (&k->points[j], a, b, ctx);
       if (!(k->block && solve_block (a, b, k, bias, remaining, &change)))
         for (j = 0; j < k->count; ++j)
           {
@@ -499,6 +503,71 @@ void contact_time_of_impact (carom_world *world, const step_context *ctx)
           a->da -= a->ii * (p->rn_a * dn + p->rt_a * dt_);
           b->dp = v2_add (b->dp, v2_add (v2_scale (p->normal, b->im * dn), v2_scale (t, b->im * dt_)));
           b->da += b->ii * (p->rn_b * dn + p->rt_b * dt_);
+        }
+    }
+}
+
+/* ------------------------------------------------------------ push-out */
+
+/* The pseudo-velocity versions of contact_speed and contact_push: the
+ * push-out moves the bodies through these alone. */
+static inline double pseudo_speed (const solver_body *a, const solver_body *b, vec2 d, double ra_d, double rb_d)
+{
+  return v2_dot (v2_sub (b->pv, a->pv), d) + b->pw * rb_d - a->pw * ra_d;
+}
+
+static inline void pseudo_push (solver_body *a, solver_body *b, vec2 d, double ra_d, double rb_d, double lambda)
+{
+  a->pv = v2_mad (a->pv, -a->im * lambda, d);
+  a->pw -= a->ii * ra_d * lambda;
+  b->pv = v2_mad (b->pv, b->im * lambda, d);
+  b->pw += b->ii * rb_d * lambda;
+}
+
+void contact_push_out (carom_world *world, const step_context *ctx, int first)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  int32_t i, j;
+  for (i = 0; i < c->count; ++i)
+    {
+      contact *k = &c->list[i];
+      solver_body *a = &sb[k->a], *b = &sb[k->b];
+      double bias[MANIFOLD_MAX_POINTS];
+      int any = 0;
+      for (j = 0; j < k->count; ++j)
+        {
+          if (first)
+            k->points[j].push_impulse = 0.0; /* last sub-step's was dropped with the move */
+          bias[j] = push_bias (k, &k->points[j], a, b, ctx);
+          any |= bias[j] < 0.0 || k->points[j].push_impulse > 0.0;
+        }
+      if (!any)
+        continue;
+      if (k->block)
+        {
+          contact_point *p1 = &k->points[0], *p2 = &k->points[1];
+          double x1 = p1->push_impulse, x2 = p2->push_impulse, y1, y2;
+          double b1 = pseudo_speed (a, b, p1->normal, p1->rn_a, p1->rn_b) + bias[0] - (k->k11 * x1 + k->k12 * x2);
+          double b2 = pseudo_speed (a, b, p2->normal, p2->rn_a, p2->rn_b) + bias[1] - (k->k12 * x1 + k->k22 * x2);
+          if (contact_lcp2 (k->k11, k->k12, k->k22, b1, b2, &y1, &y2))
+            {
+              pseudo_push (a, b, p1->normal, p1->rn_a, p1->rn_b, y1 - x1);
+              pseudo_push (a, b, p2->normal, p2->rn_a, p2->rn_b, y2 - x2);
+              p1->push_impulse = y1;
+              p2->push_impulse = y2;
+              continue;
+            }
+        }
+      for (j = 0; j < k->count; ++j)
+        {
+          contact_point *p = &k->points[j];
+          double acc = p->push_impulse
+                       - p->normal_mass * (pseudo_speed (a, b, p->normal, p->rn_a, p->rn_b) + bias[j]);
+          if (acc < 0.0)
+            acc = 0.0;
+          pseudo_push (a, b, p->normal, p->rn_a, p->rn_b, acc - p->push_impulse);
+          p->push_impulse = acc;
         }
     }
 }

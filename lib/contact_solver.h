@@ -17,14 +17,18 @@ void contact_prepare (struct carom_world *world, const step_context *ctx);
  * (in this and the passes below) is the time from the impulses to the end
  * of the step. */
 void contact_warm_start (struct carom_world *world, double remaining);
-/* One pass over every contact: with use_bias, overlap beyond the slop is
- * pushed out; without (relax), only approach is removed, which takes the
- * push's velocity back. `kicks` is how many gravity kicks the sub-steps have
- * given so far. With only_fine, only the contacts of bodies so small that a
+/* One pass over every contact: the impulses that keep its points from
+ * approaching (a speculative one from passing its gap). `kicks` is how many
+ * gravity kicks the sub-steps have given so far. With only_fine, only the contacts of bodies so small that a
  * sub-step's fall exceeds their slop are solved (contact.fine). Returns the
  * largest change of a point's normal speed. */
-double contact_solve (struct carom_world *world, const step_context *ctx, int32_t kicks, int use_bias,
-                      double remaining, int only_fine);
+double contact_solve (struct carom_world *world, const step_context *ctx, int32_t kicks, double remaining,
+                      int only_fine);
+/* The push-out of overlap beyond the slop, on the pseudo-velocities alone
+ * (split impulses): they move the bodies in this sub-step and are dropped,
+ * so position correction never changes a velocity. `first`: the sub-step's
+ * first pass, which starts from no pseudo-impulse. */
+void contact_push_out (struct carom_world *world, const step_context *ctx, int first);
 /* After the sub-steps: points that were struck leave at e times the speed
  * they met with (eq. 3.18). */
 void contact_restitution (struct carom_world *world, const step_context *ctx);
@@ -34,7 +38,7 @@ void contact_time_of_impact (struct carom_world *world, const step_context *ctx)
 
 /* Shock propagation (shock.c): when touching bodies differ in mass more
  * than tenfold under gravity, a pass from the ground up after the solve and
- * the relax of each sub-step, holding each lower body still. */
+ * the second solve of each sub-step, holding each lower body still. */
 void contact_shock_prepare (struct carom_world *world, const step_context *ctx);
 void contact_shock (struct carom_world *world, const step_context *ctx);
 

@@ -1,13 +1,15 @@
-/* The order of the stages in one update (Catto's "soft step"): the contacts
- * are detected once, at the start (contact.c), and set up once
- * (contact_prepare); then each of `substeps` sub-steps
+/* The order of the stages in one update (sub-stepping after Catto's "soft
+ * step"): the contacts are detected once, at the start (contact.c), and set
+ * up once (contact_prepare); then each of `substeps` sub-steps
  *
  *   kicks the velocities with gravity and damping,
  *   applies the impulses the contacts carried so far (warm starting),
- *   solves the contacts with their soft push-out (iterations passes),
- *   moves the bodies by their velocities,
- *   and relaxes: solves again without the push-out, so the push moved the
- *   bodies but leaves no velocity behind (iterations passes);
+ *   solves the contacts (iterations passes, more for small bodies),
+ *   pushes overlap out on pseudo-velocities (split impulses, iterations
+ *   passes), which never touch the velocities,
+ *   moves the bodies by their velocities plus the pseudo-velocities, which
+ *   are then dropped,
+ *   and solves again (iterations passes);
  *
  * and at the end, restitution, once, on the points that were struck. Small
  * sub-steps make the few passes enough: a stack converges over the
@@ -43,6 +45,8 @@ static void gather (carom_world *world)
       sb[i].v = b->v;
       sb[i].w = b->w;
       sb[i].dp = v2 (0.0, 0.0);
+      sb[i].pv = v2 (0.0, 0.0);
+      sb[i].pw = 0.0;
       sb[i].dq.c = 1.0, sb[i].dq.s = 0.0;
       sb[i].da = 0.0;
       sb[i].im = moves ? b->inv_mass : 0.0;
@@ -67,8 +71,10 @@ static void integrate_positions (carom_world *world, const step_context *ctx)
       double a, c, s, n;
       if (!b->moves)
         continue;
-      b->dp = v2_mad (b->dp, h, gravity_drift_velocity (ctx, b));
-      a = h * b->w;
+      b->dp = v2_mad (b->dp, h, v2_add (gravity_drift_velocity (ctx, b), b->pv));
+      a = h * (b->w + b->pw);
+      b->pv = v2 (0.0, 0.0);
+      b->pw = 0.0;
       b->da += a;
       c = b->dq.c - a * b->dq.s;
       s = b->dq.s + a * b->dq.c;
@@ -135,18 +141,20 @@ void solver_step (carom_world *world, const step_context *ctx)
         {
           contact_warm_start (world, ctx->dt - k * ctx->h);
           for (it = 0; it < ctx->iterations; ++it)
-            contact_solve (world, ctx, k + 1, 1, ctx->dt - k * ctx->h, 0);
+            contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, 0);
           if (world->contacts.fine_count > 0)
             for (; it < SOLVE_MAX_ITERATIONS; ++it)
-              if (!(contact_solve (world, ctx, k + 1, 1, ctx->dt - k * ctx->h, 1) > ctx->converged))
+              if (!(contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, 1) > ctx->converged))
                 break;
           contact_shock (world, ctx);
+          for (it = 0; it < ctx->iterations; ++it)
+            contact_push_out (world, ctx, it == 0);
         }
       integrate_positions (world, ctx);
       if (contacts)
         {
           for (it = 0; it < ctx->iterations; ++it)
-            contact_solve (world, ctx, k + 1, 0, ctx->dt - (k + 1) * ctx->h, 0);
+            contact_solve (world, ctx, k + 1, ctx->dt - (k + 1) * ctx->h, 0);
           contact_shock (world, ctx);
         }
     }

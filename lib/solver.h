@@ -15,6 +15,9 @@ struct carom_world;
 typedef struct solver_body {
   vec2 v;
   double w;
+  vec2 pv;       /* push-out pseudo-velocity of this sub-step: it moves the
+                    body, then is dropped (split impulses: no energy) */
+  double pw;
   vec2 dp;       /* displacement of the centre of mass since the step began */
   rot2 dq;       /* rotation since the step began (for the constraints) */
   double da;     /* the same rotation as an angle (for the body) */
