@@ -2,11 +2,11 @@
 # (stress/solver2d.c), run natively: make stress.
 .PHONY: stress check-stress
 
-$(BUILD)/stress: stress/stress.c $(BUILD)/libcarom.a
+$(BUILD)/stress: stress/stress.c stress/kinetic.h $(BUILD)/libcarom.a
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(WARN) $(OPT) $(CFLAGS) -o $@ $< $(BUILD)/libcarom.a -lm
 
-$(BUILD)/solver2d: stress/solver2d.c $(BUILD)/libcarom.a
+$(BUILD)/solver2d: stress/solver2d.c stress/kinetic.h $(BUILD)/libcarom.a
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(WARN) $(OPT) $(CFLAGS) -o $@ $< $(BUILD)/libcarom.a -lm
 

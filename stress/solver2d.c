@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include "carom.h"
+#include "kinetic.h"
 
 #define DT (1.0 / 60.0)
 #define PI 3.14159265358979323846
@@ -155,21 +156,6 @@ static double speed (const carom_world *w, carom_body_id id)
   double vx, vy;
   check (carom_body_get_velocity (w, id, &vx, &vy), "get_velocity");
   return hypot (vx, vy);
-}
-
-static double kinetic (const carom_world *w, const carom_body_id *ids, int n)
-{
-  double e = 0.0;
-  int i;
-  for (i = 0; i < n; ++i)
-    {
-      double vx, vy, s, m, inertia;
-      carom_body_get_velocity (w, ids[i], &vx, &vy);
-      carom_body_get_spin (w, ids[i], &s);
-      carom_body_get_mass (w, ids[i], &m, &inertia, NULL);
-      e += 0.5 * m * (vx * vx + vy * vy) + 0.5 * inertia * s * s;
-    }
-  return e;
 }
 
 static double max2 (double a, double b)

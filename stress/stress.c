@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "carom.h"
+#include "kinetic.h"
 
 static int passed, failed;
 
@@ -31,21 +32,6 @@ static carom_world *load (const char *path)
       exit (2);
     }
   return w;
-}
-
-static double kinetic (const carom_world *w, const carom_body_id *ids, int32_t n)
-{
-  double e = 0.0;
-  int32_t i;
-  for (i = 0; i < n; ++i)
-    {
-      double vx, vy, s, m, inertia;
-      carom_body_get_velocity (w, ids[i], &vx, &vy);
-      carom_body_get_spin (w, ids[i], &s);
-      carom_body_get_mass (w, ids[i], &m, &inertia, NULL);
-      e += 0.5 * m * (vx * vx + vy * vy) + 0.5 * inertia * s * s;
-    }
-  return e;
 }
 
 /* Case 2: the 20-row pyramid (scenes/pyramid.scene), 10 s. Bound: the top
