@@ -72,6 +72,18 @@ void world_momentum (const carom_world *world, double *px, double *py, double *l
   free (ids);
 }
 
+carom_body_id add_box (carom_world *w, carom_body_type type, double x, double y, double angle, double width,
+                       double height)
+{
+  carom_body_def d;
+  carom_body_id id = CAROM_NULL_BODY;
+  assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+  d.type = type;
+  d.x = x, d.y = y, d.angle = angle;
+  assert_status (carom_world_add_box (w, &d, width, height, &id), CAROM_OK);
+  return id;
+}
+
 /* FNV-1a over raw bytes. */
 static uint64_t mix (uint64_t h, const void *p, size_t n)
 {

@@ -44,6 +44,10 @@ int near_rel (double a, double b, double tol);
 int world_setup (void **state);
 int world_teardown (void **state);
 
+/* Add a width x height box of the given type at (x, y), turned by angle;
+ * asserts that it was added and returns its id. */
+carom_body_id add_box (carom_world *w, carom_body_type type, double x, double y, double angle, double width,
+                       double height);
 /* Total kinetic energy (translational and rotational) of all bodies. */
 double world_kinetic_energy (const carom_world *world);
 /* FNV-1a hash of the whole state a step depends on: settings and effects,

@@ -26,18 +26,6 @@ static carom_world *make_world (const carom_world_def *def)
   return w;
 }
 
-static carom_body_id add_box (carom_world *w, carom_body_type type, double x, double y, double angle, double wd,
-                              double ht)
-{
-  carom_body_def d;
-  carom_body_id id = CAROM_NULL_BODY;
-  assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
-  d.type = type;
-  d.x = x, d.y = y, d.angle = angle;
-  assert_status (carom_world_add_box (w, &d, wd, ht, &id), CAROM_OK);
-  return id;
-}
-
 /* Largest penetration depth among the contacts the last update found. */
 static double max_depth (const carom_world *w)
 {

@@ -15,19 +15,6 @@ static carom_world *new_world (double gy, double friction)
   return w;
 }
 
-static carom_body_id add_box (carom_world *w, carom_body_type type, double x, double y, double angle, double wd,
-                              double ht)
-{
-  carom_body_def d;
-  carom_body_id id;
-  carom_body_def_init (&d, sizeof d);
-  d.type = type;
-  d.x = x, d.y = y, d.angle = angle;
-  assert_status (carom_world_add_box (w, &d, wd, ht, &id), CAROM_OK);
-  return id;
-}
-
-
 /* A busy scene with every optional stage off. `toggle` switches each stage
  * on and off again before stepping. */
 static carom_world *busy_scene (int toggle)

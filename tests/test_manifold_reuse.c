@@ -21,17 +21,6 @@ static carom_world *make (double tolerance, double friction)
   return w;
 }
 
-static carom_body_id add_box (carom_world *w, carom_body_type type, double x, double y, double angle, double width,
-                              double height)
-{
-  carom_body_def d;
-  carom_body_id id;
-  carom_body_def_init (&d, sizeof d);
-  d.type = type, d.x = x, d.y = y, d.angle = angle;
-  assert_status (carom_world_add_box (w, &d, width, height, &id), CAROM_OK);
-  return id;
-}
-
 static int32_t reused_contacts (const carom_world *w)
 {
   int32_t i, n = 0;
