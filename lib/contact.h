@@ -52,6 +52,7 @@ typedef struct contact {
   xform computed_at;          /* b's pose in a's frame when the points were
                                  last computed by the narrow phase */
   int32_t reused;             /* this step's points are last step's, moved */
+  int32_t batched;            /* solved in a batch this step (contact_batch.c) */
   int32_t count;
   contact_point points[MANIFOLD_MAX_POINTS];
 } contact;

@@ -216,6 +216,8 @@ void contact_warm_start (carom_world *world, double remaining)
     {
       contact *k = &c->list[i];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
+      if (k->batched)
+        continue;
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
@@ -344,7 +346,7 @@ double contact_solve (carom_world *world, const step_context *ctx, int32_t kicks
       contact *k = &c->list[i];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
       double bias[MANIFOLD_MAX_POINTS], change = 0.0;
-      if (only_fine && !k->fine)
+      if (k->batched || (only_fine && !k->fine))
         continue;
       for (j = 0; j < k->count; ++j)
         bias[j] = point_bias (&k->points[j], a, b, ctx);
@@ -535,6 +537,8 @@ void contact_push_out (carom_world *world, const step_context *ctx, int first)
       solver_body *a = &sb[k->a], *b = &sb[k->b];
       double bias[MANIFOLD_MAX_POINTS];
       int any = 0;
+      if (k->batched)
+        continue;
       for (j = 0; j < k->count; ++j)
         {
           if (first)

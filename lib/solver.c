@@ -17,10 +17,13 @@
  * no extra detection. */
 #include "solver.h"
 
+#include "contact_batch.h"
 #include "contact_solver.h"
 #include "damping.h"
 #include "gravity.h"
 #include "world.h"
+
+#include <string.h>
 
 /* Small bodies (contact.fine: a sub-step's fall is more than their slop):
  * their contacts' solve pass is repeated, past `iterations`, while some
@@ -54,6 +57,8 @@ static void gather (carom_world *world)
       sb[i].constrained = 0;
       sb[i].moves = moves;
     }
+  /* the inert body of the batches' unused lanes (contact_batch.h) */
+  memset (&sb[world->slot_count], 0, sizeof *sb);
 }
 
 /* Move every body the sub-steps move by its velocity over one sub-step.
@@ -104,8 +109,15 @@ static void finish (carom_world *world)
 int solver_reserve (carom_world *world)
 {
   int32_t need = 4 * world->slot_count + 1 + 3 * world->contacts.count;
-  return mem_reserve (&world->allocator, (void **) &world->solver_bodies, &world->solver_cap, world->slot_count,
+  int32_t batches = world->contacts.count / BATCH_LANES + 2 * CONSTRAINT_COLOURS;
+  return mem_reserve (&world->allocator, (void **) &world->solver_bodies, &world->solver_cap, world->slot_count + 1,
                       sizeof (solver_body))
+         && mem_reserve (&world->allocator, (void **) &world->batches, &world->batch_cap, batches,
+                         sizeof (contact_batch))
+         && mem_reserve (&world->allocator, (void **) &world->colour_used, &world->colour_cap, world->slot_count,
+                         sizeof (uint32_t))
+         && mem_reserve (&world->allocator, (void **) &world->batch_scratch, &world->batch_scratch_cap,
+                         2 * world->contacts.count + 2 * CONSTRAINT_COLOURS + 1, sizeof (int32_t))
          && mem_reserve (&world->allocator, (void **) &world->solver_scratch, &world->scratch_cap, need,
                          sizeof (int32_t))
          && mem_reserve (&world->allocator, (void **) &world->restitution_list, &world->restitution_cap,
@@ -117,6 +129,13 @@ void solver_destroy (carom_world *world)
   mem_free (&world->allocator, world->solver_bodies, (size_t) world->solver_cap * sizeof (solver_body));
   mem_free (&world->allocator, world->solver_scratch, (size_t) world->scratch_cap * sizeof (int32_t));
   mem_free (&world->allocator, world->restitution_list, (size_t) world->restitution_cap * sizeof (int32_t));
+  mem_free (&world->allocator, world->batches, (size_t) world->batch_cap * sizeof (contact_batch));
+  mem_free (&world->allocator, world->colour_used, (size_t) world->colour_cap * sizeof (uint32_t));
+  mem_free (&world->allocator, world->batch_scratch, (size_t) world->batch_scratch_cap * sizeof (int32_t));
+  world->batches = NULL;
+  world->colour_used = NULL;
+  world->batch_scratch = NULL;
+  world->batch_cap = world->colour_cap = world->batch_scratch_cap = 0;
   world->solver_bodies = NULL;
   world->solver_scratch = NULL;
   world->restitution_list = NULL;
@@ -131,6 +150,7 @@ void solver_step (carom_world *world, const step_context *ctx)
   if (contacts)
     {
       contact_prepare (world, ctx);
+      contact_batch_prepare (world, ctx);
       contact_shock_prepare (world, ctx);
     }
   for (k = 0; k < ctx->substeps; ++k)
@@ -139,27 +159,38 @@ void solver_step (carom_world *world, const step_context *ctx)
       damping_update (world, ctx);
       if (contacts)
         {
+          contact_batch_warm_start (world);
           contact_warm_start (world, ctx->dt - k * ctx->h);
           for (it = 0; it < ctx->iterations; ++it)
-            contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, 0);
+            {
+              contact_batch_solve (world, ctx);
+              contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, 0);
+            }
           if (world->contacts.fine_count > 0)
             for (; it < SOLVE_MAX_ITERATIONS; ++it)
               if (!(contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, 1) > ctx->converged))
                 break;
           contact_shock (world, ctx);
           for (it = 0; it < ctx->iterations; ++it)
-            contact_push_out (world, ctx, it == 0);
+            {
+              contact_batch_push_out (world, ctx, it == 0);
+              contact_push_out (world, ctx, it == 0);
+            }
         }
       integrate_positions (world, ctx);
       if (contacts)
         {
           for (it = 0; it < ctx->iterations; ++it)
-            contact_solve (world, ctx, k + 1, ctx->dt - (k + 1) * ctx->h, 0);
+            {
+              contact_batch_solve (world, ctx);
+              contact_solve (world, ctx, k + 1, ctx->dt - (k + 1) * ctx->h, 0);
+            }
           contact_shock (world, ctx);
         }
     }
   if (contacts)
     {
+      contact_batch_store (world);
       contact_restitution (world, ctx);
       contact_time_of_impact (world, ctx);
     }

@@ -4,6 +4,7 @@
 
 #include <string.h>
 
+#include "contact_batch.h"
 #include "def.h"
 #include "sleep.h"
 #include "solver.h"
@@ -48,6 +49,7 @@ carom_status carom_world_init (carom_world **world, const carom_world_def *def)
   w->allocator = def->allocator;
   w->def = *def;
   w->gravity = v2 (def->gravity_x, def->gravity_y);
+  w->solver_path = solver_path_best ();
   bodies_init (w);
   broadphase_init (w);
   contacts_init (w);
@@ -116,6 +118,14 @@ carom_status carom_world_update (carom_world *world, double dt)
   sleep_update (world, &ctx);
   check_finite (world);
   return CAROM_OK;
+}
+
+int world_set_solver_path (carom_world *world, int path)
+{
+  if (!solver_path_available ((solver_path) path))
+    return 0;
+  world->solver_path = path;
+  return 1;
 }
 
 carom_status carom_world_set_gravity (carom_world *world, double gx, double gy)

@@ -27,6 +27,13 @@ struct carom_world {
   int32_t shock_count;               /* contacts it orders this step */
   int32_t *restitution_list;         /* the struck contacts of a step */
   int32_t restitution_cap;
+  struct contact_batch *batches;     /* the coloured contacts, four a batch (contact_batch.c) */
+  int32_t batch_count, batch_cap;
+  uint32_t *colour_used;             /* per slot: the colours its constraints took */
+  int32_t colour_cap;
+  int32_t *batch_scratch;            /* colouring's order of the contacts */
+  int32_t batch_scratch_cap;
+  int solver_path;                   /* the kernels this CPU runs (solver_path) */
 
   /* effects beyond uniform gravity, each off until set (effects.c) */
   struct {
@@ -38,5 +45,10 @@ struct carom_world {
   int sleeping;
   int continuous;      /* speculative contacts as far as bodies can travel (off by default) */
 };
+
+/* Run the solver's kernels on `path` (a solver_path, contact_batch.h) from
+ * the next update on; 0 if this CPU cannot (nothing changes). For the test
+ * that every path gives the same bits. */
+int world_set_solver_path (carom_world *world, int path);
 
 #endif

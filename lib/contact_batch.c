@@ -1,0 +1,305 @@
+/* Contacts solved four at a time (contact_batch.h): colouring, packing, the
+ * portable kernels and the choice of path. */
+#include "contact_batch.h"
+
+#include <stddef.h>
+#include <string.h>
+#include <stdio.h>
+
+#include "contact_solver.h"
+#include "world.h"
+
+/* ------------------------------------------------------------ colouring */
+
+int32_t constraint_colour (uint32_t *used_a, uint32_t *used_b)
+{
+  uint32_t taken = (used_a ? *used_a : 0u) | (used_b ? *used_b : 0u), bit;
+  int32_t colour = 0;
+  if (taken == 0xffffffffu)
+    return -1;
+  for (bit = 1u; taken & bit; bit <<= 1)
+    ++colour;
+  if (used_a)
+    *used_a |= bit;
+  if (used_b)
+    *used_b |= bit;
+  return colour;
+}
+
+/* What the batches solve: contacts whose whole step is the sub-steps'
+ * passes. Restitution, the extra passes of small bodies and manifolds of
+ * more than two points stay with contact_solver.c. */
+static int batchable (const contact *k)
+{
+  return k->count >= 1 && k->count <= 2 && k->restitution == 0.0 && !k->fine;
+}
+
+static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t index, const solver_body *sb)
+{
+  const solver_body *a = &sb[k->a], *b = &sb[k->b];
+  int j;
+  c->a[lane] = k->a;
+  c->b[lane] = k->b;
+  c->contact[lane] = index;
+  c->im_a[lane] = a->im;
+  c->ii_a[lane] = a->ii;
+  c->im_b[lane] = b->im;
+  c->ii_b[lane] = b->ii;
+  c->friction[lane] = k->friction;
+  c->slop[lane] = k->slop;
+  c->max_push[lane] = k->max_push;
+  if (k->block)
+    {
+      /* contact_lcp2's first case, as the inverse of K when it has one */
+      double det = k->k11 * k->k22 - k->k12 * k->k12;
+      c->k11[lane] = k->k11;
+      c->k12[lane] = k->k12;
+      c->k22[lane] = k->k22;
+      c->pair[lane] = 1.0;
+      if (det > 1e-12 * k->k11 * k->k22)
+        {
+          c->i11[lane] = k->k22 / det;
+          c->i12[lane] = -k->k12 / det;
+          c->i22[lane] = k->k11 / det;
+          c->block[lane] = 1.0;
+        }
+    }
+  for (j = 0; j < k->count; ++j)
+    {
+      const contact_point *p = &k->points[j];
+      batch_point *q = &c->p[j];
+      q->nx[lane] = p->normal.x;
+      q->ny[lane] = p->normal.y;
+      q->ra_x[lane] = p->ra.x;
+      q->ra_y[lane] = p->ra.y;
+      q->rb_x[lane] = p->rb.x;
+      q->rb_y[lane] = p->rb.y;
+      q->adjusted[lane] = p->adjusted;
+      q->rn_a[lane] = p->rn_a;
+      q->rn_b[lane] = p->rn_b;
+      q->rt_a[lane] = p->rt_a;
+      q->rt_b[lane] = p->rt_b;
+      q->normal_mass[lane] = p->normal_mass;
+      q->tangent_mass[lane] = p->tangent_mass;
+      q->normal_impulse[lane] = p->normal_impulse;
+      q->tangent_impulse[lane] = p->tangent_impulse;
+      q->push_impulse[lane] = 0.0;
+    }
+}
+
+/* An unused lane: the inert body on both sides and every number 0, so it
+ * computes impulses of 0 and moves nothing. */
+static void clear_batch (contact_batch *c, int32_t inert)
+{
+  int lane;
+  memset (c, 0, sizeof *c);
+  for (lane = 0; lane < BATCH_LANES; ++lane)
+    {
+      c->a[lane] = c->b[lane] = inert;
+      c->contact[lane] = -1;
+    }
+}
+
+void contact_batch_prepare (carom_world *world, const step_context *ctx)
+{
+  contacts *c = &world->contacts;
+  const solver_body *sb = world->solver_bodies;
+  uint32_t *used = world->colour_used;
+  int32_t *colour = world->batch_scratch, *order = colour + c->count, *end = order + c->count;
+  int32_t i, k, n = 0;
+  int pass;
+  (void) ctx;
+  for (i = 0; i <= 2 * CONSTRAINT_COLOURS; ++i)
+    end[i] = 0;
+  /* greedy, in list order: each contact takes the first colour free at
+   * both of its moving bodies. Contacts with a body that does not move (the
+   * ground, a wall) are coloured apart, in colours solved after all the
+   * others: then, as in sequential passes that reach the ground last,
+   * nothing undoes within the pass what they did, and a squeezed pile
+   * cannot press its bodies into the walls. */
+  for (i = 0; i < c->count; ++i)
+    {
+      colour[i] = -1;
+      c->list[i].batched = 0;
+    }
+  for (pass = 0; pass < 2; ++pass)
+    {
+      for (i = 0; i < world->slot_count; ++i)
+        used[i] = 0u;
+      for (i = 0; i < c->count; ++i)
+        {
+          contact *ct = &c->list[i];
+          int ma = sb[ct->a].moves, mb = sb[ct->b].moves;
+          if ((ma && mb) == (pass == 1) || !batchable (ct))
+            continue;
+          colour[i] = constraint_colour (ma ? &used[ct->a] : NULL, mb ? &used[ct->b] : NULL);
+          if (colour[i] >= 0)
+            {
+              colour[i] += pass * CONSTRAINT_COLOURS;
+              ct->batched = 1;
+              end[colour[i] + 1]++;
+            }
+        }
+    }
+  /* each colour's contacts in list order (a counting sort), four to a
+   * batch */
+  for (i = 0; i < 2 * CONSTRAINT_COLOURS; ++i)
+    end[i + 1] += end[i];
+  for (i = 0; i < c->count; ++i)
+    if (colour[i] >= 0)
+      order[end[colour[i]]++] = i;
+  for (k = 0, i = 0; k < 2 * CONSTRAINT_COLOURS; ++k)
+    {
+      int lane = BATCH_LANES;
+      for (; i < end[k]; ++i)
+        {
+          if (lane == BATCH_LANES)
+            {
+              clear_batch (&world->batches[n++], world->slot_count);
+              lane = 0;
+            }
+          pack_lane (&world->batches[n - 1], lane++, &c->list[order[i]], order[i], sb);
+        }
+    }
+  world->batch_count = n;
+#ifdef BATCH_DEBUG
+  { static int q; if (++q % 100 == 0) { int nb = 0, used_l = 0; for (i = 0; i < c->count; ++i) nb += c->list[i].batched; for (i = 0; i < n; ++i) for (k = 0; k < 4; ++k) used_l += world->batches[i].contact[k] >= 0; fprintf (stderr, "contacts %d batched %d batches %d lanes %d\n", c->count, nb, n, used_l);} }
+#endif
+}
+
+void contact_batch_store (carom_world *world)
+{
+  contacts *c = &world->contacts;
+  int32_t i;
+  int lane, j;
+  for (i = 0; i < world->batch_count; ++i)
+    {
+      const contact_batch *b = &world->batches[i];
+      for (lane = 0; lane < BATCH_LANES; ++lane)
+        {
+          contact *k;
+          if (b->contact[lane] < 0)
+            continue;
+          k = &c->list[b->contact[lane]];
+          for (j = 0; j < k->count; ++j)
+            {
+              k->points[j].normal_impulse = b->p[j].normal_impulse[lane];
+              k->points[j].tangent_impulse = b->p[j].tangent_impulse[lane];
+            }
+        }
+    }
+}
+
+/* ------------------------------------------------------------ the paths */
+
+/* The AVX2 kernels read a solver body's first ten doubles as rows of four
+ * (contact_batch_kernel.h): v.x v.y w pv.x pv.y pw dp.x dp.y dq.c dq.s. */
+typedef char solver_body_layout[(offsetof (solver_body, v) == 0 && offsetof (solver_body, w) == 16
+                                 && offsetof (solver_body, pv) == 24 && offsetof (solver_body, pw) == 40
+                                 && offsetof (solver_body, dp) == 48 && offsetof (solver_body, dq) == 64
+                                 && sizeof (rot2) == 16 && sizeof (vec2) == 16)
+                                    ? 1
+                                    : -1];
+
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
+#define HAVE_AVX2_PATH 1
+#endif
+
+int solver_path_available (solver_path path)
+{
+  if (path == SOLVER_PATH_PORTABLE)
+    return 1;
+#ifdef HAVE_AVX2_PATH
+  if (path == SOLVER_PATH_AVX2)
+    {
+      __builtin_cpu_init ();
+      return __builtin_cpu_supports ("avx2") != 0;
+    }
+#endif
+  return 0;
+}
+
+solver_path solver_path_best (void)
+{
+  return solver_path_available (SOLVER_PATH_AVX2) ? SOLVER_PATH_AVX2 : SOLVER_PATH_PORTABLE;
+}
+
+void contact_batch_warm_start (carom_world *world)
+{
+  if (world->solver_path == SOLVER_PATH_AVX2)
+    contact_batch_warm_start_avx2 (world->batches, world->batch_count, world->solver_bodies);
+  else
+    contact_batch_warm_start_portable (world->batches, world->batch_count, world->solver_bodies);
+}
+
+void contact_batch_solve (carom_world *world, const step_context *ctx)
+{
+  if (world->solver_path == SOLVER_PATH_AVX2)
+    contact_batch_solve_avx2 (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h);
+  else
+    contact_batch_solve_portable (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h);
+}
+
+void contact_batch_push_out (carom_world *world, const step_context *ctx, int first)
+{
+  if (world->solver_path == SOLVER_PATH_AVX2)
+    contact_batch_push_out_avx2 (world->batches, world->batch_count, world->solver_bodies, ctx->push_rate, first);
+  else
+    contact_batch_push_out_portable (world->batches, world->batch_count, world->solver_bodies, ctx->push_rate,
+                                     first);
+}
+
+/* ------------------------------------------------- the portable kernels */
+
+typedef struct wide {
+  double l[BATCH_LANES];
+} wide;
+typedef struct wmask {
+  int l[BATCH_LANES];
+} wmask;
+
+#define LANEWISE(expr)                                                                                             \
+  int i;                                                                                                           \
+  for (i = 0; i < BATCH_LANES; ++i)                                                                                \
+    r.l[i] = (expr);                                                                                               \
+  return r
+
+static inline wide w_load (const double *p) { wide r; LANEWISE (p[i]); }
+static inline void w_store (double *p, wide x) { int i; for (i = 0; i < BATCH_LANES; ++i) p[i] = x.l[i]; }
+static inline wide w_set1 (double d) { wide r; LANEWISE (d); }
+static inline wide w_add (wide a, wide b) { wide r; LANEWISE (a.l[i] + b.l[i]); }
+static inline wide w_sub (wide a, wide b) { wide r; LANEWISE (a.l[i] - b.l[i]); }
+static inline wide w_mul (wide a, wide b) { wide r; LANEWISE (a.l[i] * b.l[i]); }
+static inline wide w_div (wide a, wide b) { wide r; LANEWISE (a.l[i] / b.l[i]); }
+static inline wide w_neg (wide a) { wide r; LANEWISE (-a.l[i]); }
+static inline wide w_max (wide a, wide b) { wide r; LANEWISE (a.l[i] > b.l[i] ? a.l[i] : b.l[i]); }
+static inline wide w_min (wide a, wide b) { wide r; LANEWISE (a.l[i] < b.l[i] ? a.l[i] : b.l[i]); }
+static inline wmask m_gt (wide a, wide b) { wmask r; LANEWISE (a.l[i] > b.l[i]); }
+static inline wmask m_ge (wide a, wide b) { wmask r; LANEWISE (a.l[i] >= b.l[i]); }
+static inline wmask m_lt (wide a, wide b) { wmask r; LANEWISE (a.l[i] < b.l[i]); }
+static inline wmask m_and (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] & b.l[i]); }
+static inline wmask m_or (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] | b.l[i]); }
+static inline wmask m_andnot (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] & !b.l[i]); }
+static inline wide w_sel (wmask m, wide a, wide b) { wide r; LANEWISE (m.l[i] ? a.l[i] : b.l[i]); }
+
+#define W_LOAD w_load
+#define W_STORE w_store
+#define W_SET1 w_set1
+#define W_ADD w_add
+#define W_SUB w_sub
+#define W_MUL w_mul
+#define W_DIV w_div
+#define W_NEG w_neg
+#define W_MAX w_max
+#define W_MIN w_min
+#define M_GT m_gt
+#define M_GE m_ge
+#define M_LT m_lt
+#define M_AND m_and
+#define M_OR m_or
+#define M_ANDNOT m_andnot
+#define W_SEL w_sel
+#define KERNEL(name) name##_portable
+#define KERNEL_ATTR
+
+#include "contact_batch_kernel.h"

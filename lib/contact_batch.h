@@ -1,0 +1,92 @@
+/* Contacts solved four at a time.
+ *
+ * The contacts that need nothing but the sub-steps' passes (no restitution,
+ * at most two points, bodies large enough for one pass) are coloured: no
+ * two contacts of a colour share a body that moves, so the contacts of one
+ * colour can be solved in any order, or at once. Each colour is packed into
+ * batches of four lanes (structure of arrays) that one kernel solves lane by
+ * lane: the portable kernel in contact_batch.c, and the same kernel on AVX2
+ * registers in contact_batch_avx2.c, chosen at run time from the CPU. Both
+ * are one source (contact_batch_kernel.h) over the same operations in the
+ * same order, with no fused or approximate arithmetic, so they give the same
+ * bits. Bodies that do not move (static, asleep) take no colour: lanes only
+ * read them, and unused lanes point at an inert body that takes nothing.
+ * Contacts with such a body are coloured apart and solved after the others
+ * (the ground last, so nothing undoes it within a pass).
+ *
+ * The rest (bouncy contacts, small bodies, contacts of more than two points,
+ * and those a body with every colour taken leaves over) are solved after
+ * the batches by the one-at-a-time passes of contact_solver.c.
+ *
+ * The batches serve any constraint between two bodies: colouring looks at
+ * the pair alone (constraint_colour). */
+#ifndef CAROM_CONTACT_BATCH_H
+#define CAROM_CONTACT_BATCH_H
+
+#include <stdint.h>
+
+#include "step.h"
+
+struct carom_world;
+struct solver_body;
+
+#define BATCH_LANES 4
+/* Colours of the constraint graph (as many again for the constraints with
+ * a body that does not move); a constraint whose bodies have used them all
+ * is left over (solved one at a time, after the batches). */
+#define CONSTRAINT_COLOURS 32
+
+typedef enum solver_path { SOLVER_PATH_PORTABLE = 0, SOLVER_PATH_AVX2 = 1 } solver_path;
+
+typedef struct batch_point {
+  double nx[BATCH_LANES], ny[BATCH_LANES];
+  double ra_x[BATCH_LANES], ra_y[BATCH_LANES], rb_x[BATCH_LANES], rb_y[BATCH_LANES];
+  double adjusted[BATCH_LANES];
+  double rn_a[BATCH_LANES], rn_b[BATCH_LANES], rt_a[BATCH_LANES], rt_b[BATCH_LANES];
+  double normal_mass[BATCH_LANES], tangent_mass[BATCH_LANES];
+  double normal_impulse[BATCH_LANES], tangent_impulse[BATCH_LANES], push_impulse[BATCH_LANES];
+} batch_point;
+
+typedef struct contact_batch {
+  int32_t a[BATCH_LANES], b[BATCH_LANES]; /* solver bodies (the inert one in unused lanes) */
+  int32_t contact[BATCH_LANES];           /* index in the contact list, -1 unused */
+  double im_a[BATCH_LANES], ii_a[BATCH_LANES], im_b[BATCH_LANES], ii_b[BATCH_LANES];
+  double friction[BATCH_LANES], slop[BATCH_LANES], max_push[BATCH_LANES];
+  double k11[BATCH_LANES], k12[BATCH_LANES], k22[BATCH_LANES]; /* the 2x2 matrix K */
+  double i11[BATCH_LANES], i12[BATCH_LANES], i22[BATCH_LANES]; /* its inverse */
+  double pair[BATCH_LANES];  /* 1: the two points are solved as one 2x2 problem */
+  double block[BATCH_LANES]; /* 1: and K is invertible (contact_lcp2's first case) */
+  batch_point p[2];
+} contact_batch;
+
+/* The path this CPU runs best (AVX2 where the CPU has it). */
+solver_path solver_path_best (void);
+/* Whether this CPU can run `path`. */
+int solver_path_available (solver_path path);
+
+/* The colour of a constraint between moving-or-not bodies with colour sets
+ * used_a, used_b (NULL: the body does not move and takes no colour), marked
+ * as used in both; -1 when every colour is taken. */
+int32_t constraint_colour (uint32_t *used_a, uint32_t *used_b);
+
+/* Colour the contacts contact_prepare set up and pack the batchable ones
+ * (marking them contact.batched); the rest stay for contact_solver.c. */
+void contact_batch_prepare (struct carom_world *world, const step_context *ctx);
+/* The passes of contact_solver.h over the batches. */
+void contact_batch_warm_start (struct carom_world *world);
+void contact_batch_solve (struct carom_world *world, const step_context *ctx);
+void contact_batch_push_out (struct carom_world *world, const step_context *ctx, int first);
+/* The impulses the batches accumulated back into their contacts (for the
+ * next step's warm start and for carom_world_get_contacts). */
+void contact_batch_store (struct carom_world *world);
+
+/* The kernels, one set per path (contact_batch_kernel.h). */
+void contact_batch_warm_start_portable (contact_batch *c, int32_t n, struct solver_body *sb);
+void contact_batch_solve_portable (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h);
+void contact_batch_push_out_portable (contact_batch *c, int32_t n, struct solver_body *sb, double push_rate,
+                                      int first);
+void contact_batch_warm_start_avx2 (contact_batch *c, int32_t n, struct solver_body *sb);
+void contact_batch_solve_avx2 (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h);
+void contact_batch_push_out_avx2 (contact_batch *c, int32_t n, struct solver_body *sb, double push_rate, int first);
+
+#endif

@@ -1,0 +1,295 @@
+/* The batch kernels of contact_batch.h, written once over four lanes.
+ *
+ * The including file defines the lanes (a type `wide` of four doubles, a
+ * mask type `wmask`, the operations W_* and M_* below), KERNEL(name) to name
+ * its copy of each function and KERNEL_ATTR for the attributes every
+ * function of the copy needs. Every operation is one IEEE rounding (or
+ * none), taken in the order written: the copies give the same bits.
+ *
+ *   W_LOAD(p) W_STORE(p, x) W_SET1(d)            four doubles
+ *   W_ADD W_SUB W_MUL W_DIV W_NEG                arithmetic
+ *   W_MAX(a, b)  a > b ? a : b    W_MIN(a, b)  a < b ? a : b   (per lane)
+ *   M_GT M_GE M_LT(a, b) M_AND M_OR M_ANDNOT(m, n) (m and not n)
+ *   W_SEL(m, a, b)  m ? a : b
+ *
+ * The equations are those of contact_solver.c, whose comments say why:
+ * eq. 3.23 with e = 0 per point, the 2x2 block of a two-point face, Coulomb
+ * friction, and the split-impulse push-out. */
+
+#define KERNEL_FN static inline KERNEL_ATTR
+
+typedef struct KERNEL (lanes) {
+  wide vx, vy, w; /* velocity, or the push-out's pseudo-velocity */
+  wide px, py;    /* displacement since the step began */
+  wide qc, qs;    /* rotation since the step began */
+} KERNEL (lanes);
+
+#ifdef KERNEL_TRANSPOSE
+/* Four bodies' rows of four doubles in, their columns out (and back). */
+KERNEL_FN void KERNEL (transpose) (wide r0, wide r1, wide r2, wide r3, wide *c0, wide *c1, wide *c2, wide *c3)
+{
+  wide t0 = _mm256_unpacklo_pd (r0, r1), t1 = _mm256_unpackhi_pd (r0, r1);
+  wide t2 = _mm256_unpacklo_pd (r2, r3), t3 = _mm256_unpackhi_pd (r2, r3);
+  *c0 = _mm256_permute2f128_pd (t0, t2, 0x20);
+  *c1 = _mm256_permute2f128_pd (t1, t3, 0x20);
+  *c2 = _mm256_permute2f128_pd (t0, t2, 0x31);
+  *c3 = _mm256_permute2f128_pd (t1, t3, 0x31);
+}
+
+/* solver_body begins v.x v.y w pv.x pv.y pw dp.x dp.y dq.c dq.s (checked in
+ * contact_batch.c): velocities are the row at 0 (pseudo: at 3), the motion
+ * since the step began the row at 6. */
+KERNEL_FN void KERNEL (gather) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o, int pseudo)
+{
+  const double *b0 = &sb[idx[0]].v.x, *b1 = &sb[idx[1]].v.x, *b2 = &sb[idx[2]].v.x, *b3 = &sb[idx[3]].v.x;
+  int at = pseudo ? 3 : 0;
+  wide rest;
+  KERNEL (transpose) (W_LOAD (b0 + at), W_LOAD (b1 + at), W_LOAD (b2 + at), W_LOAD (b3 + at), &o->vx, &o->vy, &o->w,
+                      &rest);
+  KERNEL (transpose) (W_LOAD (b0 + 6), W_LOAD (b1 + 6), W_LOAD (b2 + 6), W_LOAD (b3 + 6), &o->px, &o->py, &o->qc,
+                      &o->qs);
+}
+
+/* Lanes write back in order, the fourth double of each row as it was; a
+ * body that two lanes share does not move (it has no colour), and both
+ * write its unchanged velocity. */
+KERNEL_FN void KERNEL (scatter) (solver_body *sb, const int32_t *idx, const KERNEL (lanes) *o, int pseudo)
+{
+  double *b0 = &sb[idx[0]].v.x, *b1 = &sb[idx[1]].v.x, *b2 = &sb[idx[2]].v.x, *b3 = &sb[idx[3]].v.x;
+  int at = pseudo ? 3 : 0;
+  wide fourth = _mm256_set_pd (b3[at + 3], b2[at + 3], b1[at + 3], b0[at + 3]), r0, r1, r2, r3;
+  KERNEL (transpose) (o->vx, o->vy, o->w, fourth, &r0, &r1, &r2, &r3);
+  W_STORE (b0 + at, r0);
+  W_STORE (b1 + at, r1);
+  W_STORE (b2 + at, r2);
+  W_STORE (b3 + at, r3);
+}
+#else
+KERNEL_FN void KERNEL (gather) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o, int pseudo)
+{
+  double t[7][BATCH_LANES];
+  int i;
+  for (i = 0; i < BATCH_LANES; ++i)
+    {
+      const solver_body *s = &sb[idx[i]];
+      t[0][i] = pseudo ? s->pv.x : s->v.x;
+      t[1][i] = pseudo ? s->pv.y : s->v.y;
+      t[2][i] = pseudo ? s->pw : s->w;
+      t[3][i] = s->dp.x;
+      t[4][i] = s->dp.y;
+      t[5][i] = s->dq.c;
+      t[6][i] = s->dq.s;
+    }
+  o->vx = W_LOAD (t[0]);
+  o->vy = W_LOAD (t[1]);
+  o->w = W_LOAD (t[2]);
+  o->px = W_LOAD (t[3]);
+  o->py = W_LOAD (t[4]);
+  o->qc = W_LOAD (t[5]);
+  o->qs = W_LOAD (t[6]);
+}
+
+/* Lanes write back in order; a body that two lanes share does not move
+ * (it has no colour), and both write its unchanged velocity. */
+KERNEL_FN void KERNEL (scatter) (solver_body *sb, const int32_t *idx, const KERNEL (lanes) *o, int pseudo)
+{
+  double t[3][BATCH_LANES];
+  int i;
+  W_STORE (t[0], o->vx);
+  W_STORE (t[1], o->vy);
+  W_STORE (t[2], o->w);
+  for (i = 0; i < BATCH_LANES; ++i)
+    {
+      solver_body *s = &sb[idx[i]];
+      if (pseudo)
+        s->pv.x = t[0][i], s->pv.y = t[1][i], s->pw = t[2][i];
+      else
+        s->v.x = t[0][i], s->v.y = t[1][i], s->w = t[2][i];
+    }
+}
+#endif
+
+/* The masses of a batch's lanes. */
+typedef struct KERNEL (mass) {
+  wide im_a, ii_a, im_b, ii_b;
+} KERNEL (mass);
+
+KERNEL_FN KERNEL (mass) KERNEL (masses) (const contact_batch *c)
+{
+  KERNEL (mass) m;
+  m.im_a = W_LOAD (c->im_a);
+  m.ii_a = W_LOAD (c->ii_a);
+  m.im_b = W_LOAD (c->im_b);
+  m.ii_b = W_LOAD (c->ii_b);
+  return m;
+}
+
+/* (v_bp - v_ap) . d, as contact_speed */
+KERNEL_FN wide KERNEL (speed) (const KERNEL (lanes) *a, const KERNEL (lanes) *b, wide dx, wide dy, wide ra_d, wide rb_d)
+{
+  wide rel = W_ADD (W_MUL (W_SUB (b->vx, a->vx), dx), W_MUL (W_SUB (b->vy, a->vy), dy));
+  return W_SUB (W_ADD (rel, W_MUL (b->w, rb_d)), W_MUL (a->w, ra_d));
+}
+
+/* an impulse lambda along d: B gets +lambda d, A -lambda d, as contact_push */
+KERNEL_FN void KERNEL (push) (KERNEL (lanes) *a, KERNEL (lanes) *b, const KERNEL (mass) *m, wide dx, wide dy, wide ra_d,
+                             wide rb_d, wide lambda)
+{
+  wide sa = W_MUL (W_NEG (m->im_a), lambda), sb = W_MUL (m->im_b, lambda);
+  a->vx = W_ADD (a->vx, W_MUL (sa, dx));
+  a->vy = W_ADD (a->vy, W_MUL (sa, dy));
+  a->w = W_SUB (a->w, W_MUL (W_MUL (m->ii_a, ra_d), lambda));
+  b->vx = W_ADD (b->vx, W_MUL (sb, dx));
+  b->vy = W_ADD (b->vy, W_MUL (sb, dy));
+  b->w = W_ADD (b->w, W_MUL (W_MUL (m->ii_b, rb_d), lambda));
+}
+
+/* the separation of point p now, as contact_separation */
+KERNEL_FN wide KERNEL (separation) (const KERNEL (lanes) *a, const KERNEL (lanes) *b, const batch_point *p)
+{
+  wide rax = W_LOAD (p->ra_x), ray = W_LOAD (p->ra_y), rbx = W_LOAD (p->rb_x), rby = W_LOAD (p->rb_y);
+  wide dx = W_ADD (W_SUB (b->px, a->px),
+                   W_SUB (W_SUB (W_MUL (b->qc, rbx), W_MUL (b->qs, rby)), W_SUB (W_MUL (a->qc, rax), W_MUL (a->qs, ray))));
+  wide dy = W_ADD (W_SUB (b->py, a->py),
+                   W_SUB (W_ADD (W_MUL (b->qs, rbx), W_MUL (b->qc, rby)), W_ADD (W_MUL (a->qs, rax), W_MUL (a->qc, ray))));
+  return W_ADD (W_ADD (W_MUL (dx, W_LOAD (p->nx)), W_MUL (dy, W_LOAD (p->ny))), W_LOAD (p->adjusted));
+}
+
+/* contact_lcp2 on every lane, with the inverses set up once per step
+ * (contact_batch.c): the four cases in its order, the first that holds
+ * taken. Returns the lanes where one holds. */
+KERNEL_FN wmask KERNEL (lcp2) (const contact_batch *c, wide b1, wide b2, wide *x1, wide *x2)
+{
+  wide zero = W_SET1 (0.0), k12 = W_LOAD (c->k12);
+  wide y1 = W_NEG (W_ADD (W_MUL (W_LOAD (c->i11), b1), W_MUL (W_LOAD (c->i12), b2)));
+  wide y2 = W_NEG (W_ADD (W_MUL (W_LOAD (c->i12), b1), W_MUL (W_LOAD (c->i22), b2)));
+  wmask both = M_AND (M_GT (W_LOAD (c->block), zero), M_AND (M_GE (y1, zero), M_GE (y2, zero)));
+  wide z1 = W_NEG (W_MUL (b1, W_LOAD (c->p[0].normal_mass)));
+  wmask first = M_AND (M_GE (z1, zero), M_GE (W_ADD (W_MUL (k12, z1), b2), zero));
+  wide z2 = W_NEG (W_MUL (b2, W_LOAD (c->p[1].normal_mass)));
+  wmask second = M_AND (M_GE (z2, zero), M_GE (W_ADD (W_MUL (k12, z2), b1), zero));
+  wmask neither = M_AND (M_GE (b1, zero), M_GE (b2, zero));
+  *x1 = W_SEL (both, y1, W_SEL (first, z1, zero));
+  *x2 = W_SEL (both, y2, W_SEL (first, zero, W_SEL (second, z2, zero)));
+  return M_OR (M_OR (both, first), M_OR (second, neither));
+}
+
+/* The normal impulses of a batch: both points at once where the lane is a
+ * block and the 2x2 problem has a consistent case, else one after the
+ * other. `use` masks the lanes that solve at all; `bias` is -target speed. */
+KERNEL_FN void KERNEL (normal) (const contact_batch *c, KERNEL (lanes) *a, KERNEL (lanes) *b, const KERNEL (mass) *m,
+                                const wide *bias, wide *x, wmask use)
+{
+  const batch_point *p0 = &c->p[0], *p1 = &c->p[1];
+  wide zero = W_SET1 (0.0);
+  wide n0x = W_LOAD (p0->nx), n0y = W_LOAD (p0->ny), n1x = W_LOAD (p1->nx), n1y = W_LOAD (p1->ny);
+  wide r0a = W_LOAD (p0->rn_a), r0b = W_LOAD (p0->rn_b), r1a = W_LOAD (p1->rn_a), r1b = W_LOAD (p1->rn_b);
+  wide k11 = W_LOAD (c->k11), k12 = W_LOAD (c->k12), k22 = W_LOAD (c->k22);
+  wide y0, y1, acc, d;
+  wide b0 = W_SUB (W_ADD (KERNEL (speed) (a, b, n0x, n0y, r0a, r0b), bias[0]), W_ADD (W_MUL (k11, x[0]), W_MUL (k12, x[1])));
+  wide b1 = W_SUB (W_ADD (KERNEL (speed) (a, b, n1x, n1y, r1a, r1b), bias[1]), W_ADD (W_MUL (k12, x[0]), W_MUL (k22, x[1])));
+  wmask ok = M_AND (M_AND (KERNEL (lcp2) (c, b0, b1, &y0, &y1), M_GT (W_LOAD (c->pair), zero)), use);
+  wmask one = M_ANDNOT (use, ok);
+  KERNEL (push) (a, b, m, n0x, n0y, r0a, r0b, W_SEL (ok, W_SUB (y0, x[0]), zero));
+  KERNEL (push) (a, b, m, n1x, n1y, r1a, r1b, W_SEL (ok, W_SUB (y1, x[1]), zero));
+  x[0] = W_SEL (ok, y0, x[0]);
+  x[1] = W_SEL (ok, y1, x[1]);
+  acc = W_MAX (W_SUB (x[0], W_MUL (W_LOAD (p0->normal_mass), W_ADD (KERNEL (speed) (a, b, n0x, n0y, r0a, r0b), bias[0]))), zero);
+  d = W_SEL (one, W_SUB (acc, x[0]), zero);
+  KERNEL (push) (a, b, m, n0x, n0y, r0a, r0b, d);
+  x[0] = W_SEL (one, acc, x[0]);
+  acc = W_MAX (W_SUB (x[1], W_MUL (W_LOAD (p1->normal_mass), W_ADD (KERNEL (speed) (a, b, n1x, n1y, r1a, r1b), bias[1]))), zero);
+  d = W_SEL (one, W_SUB (acc, x[1]), zero);
+  KERNEL (push) (a, b, m, n1x, n1y, r1a, r1b, d);
+  x[1] = W_SEL (one, acc, x[1]);
+}
+
+KERNEL_ATTR void KERNEL (contact_batch_warm_start) (contact_batch *c, int32_t n, solver_body *sb)
+{
+  int32_t i;
+  int j;
+  for (i = 0; i < n; ++i, ++c)
+    {
+      KERNEL (lanes) a, b;
+      KERNEL (mass) m = KERNEL (masses) (c);
+      KERNEL (gather) (sb, c->a, &a, 0);
+      KERNEL (gather) (sb, c->b, &b, 0);
+      for (j = 0; j < 2; ++j)
+        {
+          const batch_point *p = &c->p[j];
+          wide nx = W_LOAD (p->nx), ny = W_LOAD (p->ny);
+          KERNEL (push) (&a, &b, &m, nx, ny, W_LOAD (p->rn_a), W_LOAD (p->rn_b), W_LOAD (p->normal_impulse));
+          KERNEL (push) (&a, &b, &m, W_NEG (ny), nx, W_LOAD (p->rt_a), W_LOAD (p->rt_b), W_LOAD (p->tangent_impulse));
+        }
+      KERNEL (scatter) (sb, c->a, &a, 0);
+      KERNEL (scatter) (sb, c->b, &b, 0);
+    }
+}
+
+KERNEL_ATTR void KERNEL (contact_batch_solve) (contact_batch *c, int32_t n, solver_body *sb, double inv_h)
+{
+  wide zero = W_SET1 (0.0), ih = W_SET1 (inv_h);
+  int32_t i;
+  int j;
+  for (i = 0; i < n; ++i, ++c)
+    {
+      KERNEL (lanes) a, b;
+      KERNEL (mass) m = KERNEL (masses) (c);
+      wide bias[2], x[2], friction = W_LOAD (c->friction);
+      KERNEL (gather) (sb, c->a, &a, 0);
+      KERNEL (gather) (sb, c->b, &b, 0);
+      for (j = 0; j < 2; ++j)
+        {
+          /* a speculative point may close its gap within the sub-step */
+          wide s = KERNEL (separation) (&a, &b, &c->p[j]);
+          bias[j] = W_SEL (M_GT (s, zero), W_MUL (s, ih), zero);
+          x[j] = W_LOAD (c->p[j].normal_impulse);
+        }
+      KERNEL (normal) (c, &a, &b, &m, bias, x, M_GE (zero, zero));
+      for (j = 0; j < 2; ++j)
+        {
+          batch_point *p = &c->p[j];
+          wide tx = W_NEG (W_LOAD (p->ny)), ty = W_LOAD (p->nx), rta = W_LOAD (p->rt_a), rtb = W_LOAD (p->rt_b);
+          wide old = W_LOAD (p->tangent_impulse), limit = W_MUL (friction, x[j]);
+          wide acc = W_SUB (old, W_MUL (W_LOAD (p->tangent_mass), KERNEL (speed) (&a, &b, tx, ty, rta, rtb)));
+          acc = W_MIN (W_MAX (acc, W_NEG (limit)), limit);
+          KERNEL (push) (&a, &b, &m, tx, ty, rta, rtb, W_SUB (acc, old));
+          W_STORE (p->tangent_impulse, acc);
+          W_STORE (p->normal_impulse, x[j]);
+        }
+      KERNEL (scatter) (sb, c->a, &a, 0);
+      KERNEL (scatter) (sb, c->b, &b, 0);
+    }
+}
+
+KERNEL_ATTR void KERNEL (contact_batch_push_out) (contact_batch *c, int32_t n, solver_body *sb, double push_rate,
+                                                  int first)
+{
+  wide zero = W_SET1 (0.0), rate = W_SET1 (push_rate);
+  int32_t i;
+  int j;
+  for (i = 0; i < n; ++i, ++c)
+    {
+      KERNEL (lanes) a, b;
+      KERNEL (mass) m = KERNEL (masses) (c);
+      wide bias[2], x[2], slop = W_LOAD (c->slop), fastest = W_NEG (W_LOAD (c->max_push));
+      wmask use = M_GT (zero, zero);
+      KERNEL (gather) (sb, c->a, &a, 1);
+      KERNEL (gather) (sb, c->b, &b, 1);
+      for (j = 0; j < 2; ++j)
+        {
+          /* overlap beyond the slop, a fraction of it per sub-step, no faster
+           * than max_push */
+          wide e = W_ADD (KERNEL (separation) (&a, &b, &c->p[j]), slop);
+          bias[j] = W_SEL (M_GE (e, zero), zero, W_MAX (W_MUL (rate, e), fastest));
+          /* last sub-step's push was dropped with the move */
+          x[j] = first ? zero : W_LOAD (c->p[j].push_impulse);
+          use = M_OR (use, M_OR (M_LT (bias[j], zero), M_GT (x[j], zero)));
+        }
+      KERNEL (normal) (c, &a, &b, &m, bias, x, use);
+      W_STORE (c->p[0].push_impulse, x[0]);
+      W_STORE (c->p[1].push_impulse, x[1]);
+      KERNEL (scatter) (sb, c->a, &a, 1);
+      KERNEL (scatter) (sb, c->b, &b, 1);
+    }
+}

@@ -1,0 +1,179 @@
+/* The coloured batches (lib/contact_batch.c): a proper colouring, and the
+ * same bits from every solver path this CPU has. */
+#include "support.h"
+
+#include <stdio.h>
+
+#include "contact_batch.h"
+#include "solver.h"
+#include "world.h"
+
+/* A pile with every kind of contact the batches take and leave: a
+ * pyramid (two-point faces, the 2x2 block), tumbling polygons and circles
+ * (one-point contacts, friction), a body 50 times heavier than the boxes it
+ * lands on (shock propagation), a bouncy ball and a concave polygon (left
+ * to the one-at-a-time passes). */
+static carom_world *pile (void)
+{
+  static const double notch[] = { -0.6, -0.4, 0.6, -0.4, 0.6, 0.4, 0.0, 0.0, -0.6, 0.4 };
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_body_def d;
+  uint32_t seed = 12345u;
+  int row, i;
+  carom_world_def_init (&def, sizeof def);
+  def.gravity_y = -10.0;
+  def.friction = 0.6;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 60.0, 1.0);
+  for (row = 0; row < 8; ++row)
+    for (i = 0; i < 8 - row; ++i)
+      add_box (w, CAROM_DYNAMIC, -10.0 + 1.05 * i + 0.525 * row, 0.5 + 1.0 * row, 0.0, 1.0, 1.0);
+  for (i = 0; i < 40; ++i)
+    {
+      seed = seed * 1664525u + 1013904223u;
+      carom_body_def_init (&d, sizeof d);
+      d.x = 2.0 + (double) (i % 8) * 1.3, d.y = 1.0 + (double) (i / 8) * 1.4;
+      d.angle = (double) (seed >> 8) / 16777216.0;
+      d.spin = 0.5 * (double) (i % 3);
+      if (i % 3 == 0)
+        assert_status (carom_world_add_circle (w, &d, 0.4 + 0.02 * (i % 5), NULL), CAROM_OK);
+      else
+        assert_status (carom_world_add_regular (w, &d, 3 + i % 5, 0.5, NULL), CAROM_OK);
+    }
+  carom_body_def_init (&d, sizeof d);
+  d.x = -7.0, d.y = 12.0, d.density = 50.0;
+  assert_status (carom_world_add_box (w, &d, 1.0, 1.0, NULL), CAROM_OK);
+  carom_body_def_init (&d, sizeof d);
+  d.x = 14.0, d.y = 4.0, d.restitution = 0.8;
+  assert_status (carom_world_add_circle (w, &d, 0.3, NULL), CAROM_OK);
+  carom_body_def_init (&d, sizeof d);
+  d.x = 16.0, d.y = 2.0;
+  assert_status (carom_world_add_polygon (w, &d, notch, 5, NULL), CAROM_OK);
+  return w;
+}
+
+/* In every batch the lanes' moving bodies are distinct (they are solved at
+ * once), every batched contact sits in exactly one lane, and a contact left
+ * out is one the batches do not take or one whose bodies used every
+ * colour. */
+static void check_batches (const carom_world *w, int32_t *batched_total)
+{
+  const contacts *c = &w->contacts;
+  int32_t i, lanes = 0, marked = 0;
+  int l, m;
+  for (i = 0; i < w->batch_count; ++i)
+    {
+      const contact_batch *b = &w->batches[i];
+      for (l = 0; l < BATCH_LANES; ++l)
+        {
+          int32_t body[2];
+          if (b->contact[l] < 0)
+            {
+              assert_int_equal (b->a[l], w->slot_count);
+              assert_int_equal (b->b[l], w->slot_count);
+              continue;
+            }
+          ++lanes;
+          assert_true (c->list[b->contact[l]].batched);
+          body[0] = b->a[l], body[1] = b->b[l];
+          for (m = l + 1; m < BATCH_LANES; ++m)
+            {
+              int s;
+              if (b->contact[m] < 0)
+                continue;
+              assert_true (b->contact[m] != b->contact[l]);
+              for (s = 0; s < 2; ++s)
+                if (w->solver_bodies[body[s]].moves)
+                  assert_true (b->a[m] != body[s] && b->b[m] != body[s]);
+            }
+        }
+    }
+  for (i = 0; i < c->count; ++i)
+    marked += c->list[i].batched;
+  assert_int_equal (lanes, marked);
+  *batched_total += marked;
+}
+
+static void test_batches_are_properly_coloured (void **state)
+{
+  carom_world *w = pile ();
+  int32_t step, batched = 0, leftover = 0;
+  (void) state;
+  for (step = 0; step < 240; ++step)
+    {
+      assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+      check_batches (w, &batched);
+      leftover += w->contacts.count;
+    }
+  leftover -= batched;
+  /* both kinds happened */
+  assert_true (batched > 1000 && leftover > 0);
+  carom_world_destroy (w);
+}
+
+static void test_constraint_colour_takes_the_first_free (void **state)
+{
+  uint32_t a = 0, b = 0;
+  int32_t k;
+  (void) state;
+  assert_int_equal (constraint_colour (&a, &b), 0);
+  assert_int_equal (constraint_colour (&a, NULL), 1);
+  assert_int_equal (constraint_colour (NULL, &b), 1);
+  assert_int_equal (constraint_colour (&a, &b), 2);
+  assert_int_equal (constraint_colour (NULL, NULL), 0);
+  for (k = 3; k < CONSTRAINT_COLOURS; ++k)
+    assert_int_equal (constraint_colour (&a, NULL), k);
+  assert_true (a == 0xffffffffu);
+  /* every colour taken at a: left over, and b keeps its colours */
+  assert_int_equal (constraint_colour (&a, &b), -1);
+  assert_true (b == 0x7u);
+}
+
+/* The same pile on every path the CPU has: the same bits at every step. */
+static void test_every_path_gives_the_same_bits (void **state)
+{
+  const int paths[] = { SOLVER_PATH_PORTABLE, SOLVER_PATH_AVX2 };
+  uint64_t hash[2][200];
+  int p, step, ran = 0;
+  (void) state;
+  for (p = 0; p < 2; ++p)
+    {
+      carom_world *w;
+      if (!solver_path_available ((solver_path) paths[p]))
+        {
+          printf ("solver path %d: not on this CPU, not compared\n", paths[p]);
+          continue;
+        }
+      w = pile ();
+      assert_true (world_set_solver_path (w, paths[p]));
+      for (step = 0; step < 200; ++step)
+        {
+          assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+          hash[ran][step] = world_state_hash (w);
+        }
+      carom_world_destroy (w);
+      ++ran;
+    }
+  if (ran == 2)
+    for (step = 0; step < 200; ++step)
+      if (hash[0][step] != hash[1][step])
+        fail_msg ("the AVX2 path differs from the portable one from step %d", step);
+  /* the default is the best path */
+  {
+    carom_world *w = pile ();
+    assert_int_equal (w->solver_path, (int) solver_path_best ());
+    assert_false (world_set_solver_path (w, 99));
+    carom_world_destroy (w);
+  }
+}
+
+int main (void)
+{
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test (test_constraint_colour_takes_the_first_free),
+    cmocka_unit_test (test_batches_are_properly_coloured),
+    cmocka_unit_test (test_every_path_gives_the_same_bits),
+  };
+  return cmocka_run_group_tests (tests, NULL, NULL);
+}
