@@ -3,7 +3,6 @@
 #include "contact_batch.h"
 
 #include <stddef.h>
-#include <string.h>
 #include <stdio.h>
 
 #include "contact_solver.h"
@@ -34,69 +33,68 @@ static int batchable (const contact *k)
   return k->count >= 1 && k->count <= 2 && k->restitution == 0.0 && !k->fine;
 }
 
-static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t index, const solver_body *sb)
+/* Lane `lane` of batch c: contact k (index `index`), or, with k NULL, an
+ * unused lane: the inert body on both sides and every number 0, so it
+ * computes impulses of 0 and moves nothing. Every field of the lane is
+ * written (the batches are not cleared between steps). */
+static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t index, const solver_body *sb,
+                       int32_t inert)
 {
-  const solver_body *a = &sb[k->a], *b = &sb[k->b];
-  int j;
-  c->a[lane] = k->a;
-  c->b[lane] = k->b;
-  c->contact[lane] = index;
-  c->im_a[lane] = a->im;
-  c->ii_a[lane] = a->ii;
-  c->im_b[lane] = b->im;
-  c->ii_b[lane] = b->ii;
-  c->friction[lane] = k->friction;
-  c->slop[lane] = k->slop;
-  c->max_push[lane] = k->max_push;
-  if (k->block)
+  int j, n = k ? k->count : 0, block = k && k->block;
+  const solver_body *a = k ? &sb[k->a] : NULL, *b = k ? &sb[k->b] : NULL;
+  double det = block ? k->k11 * k->k22 - k->k12 * k->k12 : 0.0;
+  /* contact_lcp2's first case, as the inverse of K when it has one */
+  int invertible = block && det > 1e-12 * k->k11 * k->k22;
+  c->a[lane] = k ? k->a : inert;
+  c->b[lane] = k ? k->b : inert;
+  c->contact[lane] = k ? index : -1;
+  c->im_a[lane] = a ? a->im : 0.0;
+  c->ii_a[lane] = a ? a->ii : 0.0;
+  c->im_b[lane] = b ? b->im : 0.0;
+  c->ii_b[lane] = b ? b->ii : 0.0;
+  c->friction[lane] = k ? k->friction : 0.0;
+  c->slop[lane] = k ? k->slop : 0.0;
+  c->max_push[lane] = k ? k->max_push : 0.0;
+  c->k11[lane] = block ? k->k11 : 0.0;
+  c->k12[lane] = block ? k->k12 : 0.0;
+  c->k22[lane] = block ? k->k22 : 0.0;
+  c->pair[lane] = block ? 1.0 : 0.0;
+  c->i11[lane] = invertible ? k->k22 / det : 0.0;
+  c->i12[lane] = invertible ? -k->k12 / det : 0.0;
+  c->i22[lane] = invertible ? k->k11 / det : 0.0;
+  c->block[lane] = invertible ? 1.0 : 0.0;
+  for (j = 0; j < 2; ++j)
     {
-      /* contact_lcp2's first case, as the inverse of K when it has one */
-      double det = k->k11 * k->k22 - k->k12 * k->k12;
-      c->k11[lane] = k->k11;
-      c->k12[lane] = k->k12;
-      c->k22[lane] = k->k22;
-      c->pair[lane] = 1.0;
-      if (det > 1e-12 * k->k11 * k->k22)
-        {
-          c->i11[lane] = k->k22 / det;
-          c->i12[lane] = -k->k12 / det;
-          c->i22[lane] = k->k11 / det;
-          c->block[lane] = 1.0;
-        }
-    }
-  for (j = 0; j < k->count; ++j)
-    {
-      const contact_point *p = &k->points[j];
       batch_point *q = &c->p[j];
-      q->nx[lane] = p->normal.x;
-      q->ny[lane] = p->normal.y;
-      q->ra_x[lane] = p->ra.x;
-      q->ra_y[lane] = p->ra.y;
-      q->rb_x[lane] = p->rb.x;
-      q->rb_y[lane] = p->rb.y;
-      q->adjusted[lane] = p->adjusted;
-      q->rn_a[lane] = p->rn_a;
-      q->rn_b[lane] = p->rn_b;
-      q->rt_a[lane] = p->rt_a;
-      q->rt_b[lane] = p->rt_b;
-      q->normal_mass[lane] = p->normal_mass;
-      q->tangent_mass[lane] = p->tangent_mass;
-      q->normal_impulse[lane] = p->normal_impulse;
-      q->tangent_impulse[lane] = p->tangent_impulse;
+      if (j < n)
+        {
+          const contact_point *p = &k->points[j];
+          q->nx[lane] = p->normal.x;
+          q->ny[lane] = p->normal.y;
+          q->ra_x[lane] = p->ra.x;
+          q->ra_y[lane] = p->ra.y;
+          q->rb_x[lane] = p->rb.x;
+          q->rb_y[lane] = p->rb.y;
+          q->adjusted[lane] = p->adjusted;
+          q->rn_a[lane] = p->rn_a;
+          q->rn_b[lane] = p->rn_b;
+          q->rt_a[lane] = p->rt_a;
+          q->rt_b[lane] = p->rt_b;
+          q->normal_mass[lane] = p->normal_mass;
+          q->tangent_mass[lane] = p->tangent_mass;
+          q->normal_impulse[lane] = p->normal_impulse;
+          q->tangent_impulse[lane] = p->tangent_impulse;
+        }
+      else
+        {
+          q->nx[lane] = q->ny[lane] = 0.0;
+          q->ra_x[lane] = q->ra_y[lane] = q->rb_x[lane] = q->rb_y[lane] = 0.0;
+          q->adjusted[lane] = 0.0;
+          q->rn_a[lane] = q->rn_b[lane] = q->rt_a[lane] = q->rt_b[lane] = 0.0;
+          q->normal_mass[lane] = q->tangent_mass[lane] = 0.0;
+          q->normal_impulse[lane] = q->tangent_impulse[lane] = 0.0;
+        }
       q->push_impulse[lane] = 0.0;
-    }
-}
-
-/* An unused lane: the inert body on both sides and every number 0, so it
- * computes impulses of 0 and moves nothing. */
-static void clear_batch (contact_batch *c, int32_t inert)
-{
-  int lane;
-  memset (c, 0, sizeof *c);
-  for (lane = 0; lane < BATCH_LANES; ++lane)
-    {
-      c->a[lane] = c->b[lane] = inert;
-      c->contact[lane] = -1;
     }
 }
 
@@ -150,15 +148,18 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
       order[end[colour[i]]++] = i;
   for (k = 0, i = 0; k < 2 * CONSTRAINT_COLOURS; ++k)
     {
-      int lane = BATCH_LANES;
+      int lane = 0;
       for (; i < end[k]; ++i)
         {
-          if (lane == BATCH_LANES)
-            {
-              clear_batch (&world->batches[n++], world->slot_count);
-              lane = 0;
-            }
-          pack_lane (&world->batches[n - 1], lane++, &c->list[order[i]], order[i], sb);
+          pack_lane (&world->batches[n], lane, &c->list[order[i]], order[i], sb, world->slot_count);
+          if (++lane == BATCH_LANES)
+            ++n, lane = 0;
+        }
+      if (lane > 0)
+        {
+          for (; lane < BATCH_LANES; ++lane)
+            pack_lane (&world->batches[n], lane, NULL, -1, sb, world->slot_count);
+          ++n;
         }
     }
   world->batch_count = n;
@@ -281,6 +282,7 @@ static inline wmask m_and (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] & b.l[i
 static inline wmask m_or (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] | b.l[i]); }
 static inline wmask m_andnot (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] & !b.l[i]); }
 static inline wide w_sel (wmask m, wide a, wide b) { wide r; LANEWISE (m.l[i] ? a.l[i] : b.l[i]); }
+static inline int m_any (wmask m) { return m.l[0] | m.l[1] | m.l[2] | m.l[3]; }
 
 #define W_LOAD w_load
 #define W_STORE w_store
@@ -299,6 +301,7 @@ static inline wide w_sel (wmask m, wide a, wide b) { wide r; LANEWISE (m.l[i] ? 
 #define M_OR m_or
 #define M_ANDNOT m_andnot
 #define W_SEL w_sel
+#define M_ANY m_any
 #define KERNEL(name) name##_portable
 #define KERNEL_ATTR
 

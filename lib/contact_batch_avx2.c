@@ -31,6 +31,7 @@ typedef __m256d wmask;
 #define M_OR _mm256_or_pd
 #define M_ANDNOT(m, n) _mm256_andnot_pd ((n), (m))
 #define W_SEL(m, a, b) _mm256_blendv_pd ((b), (a), (m))
+#define M_ANY(m) (_mm256_movemask_pd (m) != 0)
 #define KERNEL(name) name##_avx2
 #define KERNEL_ATTR __attribute__ ((target ("avx2")))
 #define KERNEL_TRANSPOSE 1

@@ -10,7 +10,7 @@
  *   W_ADD W_SUB W_MUL W_DIV W_NEG                arithmetic
  *   W_MAX(a, b)  a > b ? a : b    W_MIN(a, b)  a < b ? a : b   (per lane)
  *   M_GT M_GE M_LT(a, b) M_AND M_OR M_ANDNOT(m, n) (m and not n)
- *   W_SEL(m, a, b)  m ? a : b
+ *   W_SEL(m, a, b)  m ? a : b      M_ANY(m)  some lane of m is set (an int)
  *
  * The equations are those of contact_solver.c, whose comments say why:
  * eq. 3.23 with e = 0 per point, the 2x2 block of a two-point face, Coulomb
@@ -190,18 +190,25 @@ KERNEL_FN void KERNEL (normal) (const contact_batch *c, KERNEL (lanes) *a, KERNE
   wide b1 = W_SUB (W_ADD (KERNEL (speed) (a, b, n1x, n1y, r1a, r1b), bias[1]), W_ADD (W_MUL (k12, x[0]), W_MUL (k22, x[1])));
   wmask ok = M_AND (M_AND (KERNEL (lcp2) (c, b0, b1, &y0, &y1), M_GT (W_LOAD (c->pair), zero)), use);
   wmask one = M_ANDNOT (use, ok);
-  KERNEL (push) (a, b, m, n0x, n0y, r0a, r0b, W_SEL (ok, W_SUB (y0, x[0]), zero));
-  KERNEL (push) (a, b, m, n1x, n1y, r1a, r1b, W_SEL (ok, W_SUB (y1, x[1]), zero));
-  x[0] = W_SEL (ok, y0, x[0]);
-  x[1] = W_SEL (ok, y1, x[1]);
-  acc = W_MAX (W_SUB (x[0], W_MUL (W_LOAD (p0->normal_mass), W_ADD (KERNEL (speed) (a, b, n0x, n0y, r0a, r0b), bias[0]))), zero);
-  d = W_SEL (one, W_SUB (acc, x[0]), zero);
-  KERNEL (push) (a, b, m, n0x, n0y, r0a, r0b, d);
-  x[0] = W_SEL (one, acc, x[0]);
-  acc = W_MAX (W_SUB (x[1], W_MUL (W_LOAD (p1->normal_mass), W_ADD (KERNEL (speed) (a, b, n1x, n1y, r1a, r1b), bias[1]))), zero);
-  d = W_SEL (one, W_SUB (acc, x[1]), zero);
-  KERNEL (push) (a, b, m, n1x, n1y, r1a, r1b, d);
-  x[1] = W_SEL (one, acc, x[1]);
+  /* a part no lane takes is skipped (on every path alike: M_ANY is exact) */
+  if (M_ANY (ok))
+    {
+      KERNEL (push) (a, b, m, n0x, n0y, r0a, r0b, W_SEL (ok, W_SUB (y0, x[0]), zero));
+      KERNEL (push) (a, b, m, n1x, n1y, r1a, r1b, W_SEL (ok, W_SUB (y1, x[1]), zero));
+      x[0] = W_SEL (ok, y0, x[0]);
+      x[1] = W_SEL (ok, y1, x[1]);
+    }
+  if (M_ANY (one))
+    {
+      acc = W_MAX (W_SUB (x[0], W_MUL (W_LOAD (p0->normal_mass), W_ADD (KERNEL (speed) (a, b, n0x, n0y, r0a, r0b), bias[0]))), zero);
+      d = W_SEL (one, W_SUB (acc, x[0]), zero);
+      KERNEL (push) (a, b, m, n0x, n0y, r0a, r0b, d);
+      x[0] = W_SEL (one, acc, x[0]);
+      acc = W_MAX (W_SUB (x[1], W_MUL (W_LOAD (p1->normal_mass), W_ADD (KERNEL (speed) (a, b, n1x, n1y, r1a, r1b), bias[1]))), zero);
+      d = W_SEL (one, W_SUB (acc, x[1]), zero);
+      KERNEL (push) (a, b, m, n1x, n1y, r1a, r1b, d);
+      x[1] = W_SEL (one, acc, x[1]);
+    }
 }
 
 KERNEL_ATTR void KERNEL (contact_batch_warm_start) (contact_batch *c, int32_t n, solver_body *sb)
@@ -285,6 +292,14 @@ KERNEL_ATTR void KERNEL (contact_batch_push_out) (contact_batch *c, int32_t n, s
           /* last sub-step's push was dropped with the move */
           x[j] = first ? zero : W_LOAD (c->p[j].push_impulse);
           use = M_OR (use, M_OR (M_LT (bias[j], zero), M_GT (x[j], zero)));
+        }
+      if (!M_ANY (use))
+        {
+          /* nothing to push out, nothing pushed yet: the bodies keep their
+           * pseudo-velocities */
+          W_STORE (c->p[0].push_impulse, x[0]);
+          W_STORE (c->p[1].push_impulse, x[1]);
+          continue;
         }
       KERNEL (normal) (c, &a, &b, &m, bias, x, use);
       W_STORE (c->p[0].push_impulse, x[0]);

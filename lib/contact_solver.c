@@ -78,11 +78,10 @@ static void lever_arms (contact_point *p, const body *ba, const body *bb, vec2 r
 {
   vec2 t = v2_perp (p->normal);
   double la = 2.0 * ba->shape.bound_radius + fabs (p->depth), lb = 2.0 * bb->shape.bound_radius + fabs (p->depth);
-  double na = v2_len (ra), nb = v2_len (rb);
-  if (na > la)
-    ra = v2_scale (ra, la / na);
-  if (nb > lb)
-    rb = v2_scale (rb, lb / nb);
+  if (v2_len2 (ra) > la * la)
+    ra = v2_scale (ra, la / v2_len (ra));
+  if (v2_len2 (rb) > lb * lb)
+    rb = v2_scale (rb, lb / v2_len (rb));
   p->ra = ra;
   p->rb = rb;
   p->rn_a = ba->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (ra, p->normal);

@@ -40,6 +40,9 @@ void contact_time_of_impact (struct carom_world *world, const step_context *ctx)
  * than tenfold under gravity, a pass from the ground up after the solve and
  * the second solve of each sub-step, holding each lower body still. */
 void contact_shock_prepare (struct carom_world *world, const step_context *ctx);
+/* Room for the step's shock rows (0 when memory ran out), and its release. */
+int contact_shock_reserve (struct carom_world *world);
+void contact_shock_destroy (struct carom_world *world);
 void contact_shock (struct carom_world *world, const step_context *ctx);
 
 /* ------------------------------------------- shared by the contact passes */

@@ -70,66 +70,136 @@ static int32_t order_by_level (carom_world *world, int32_t *order)
   return count;
 }
 
-static void shock_pass (carom_world *world, const step_context *ctx, const int32_t *order, int32_t count, double tol)
+/* What the pass reads of a contact it may hold, copied once per step in
+ * level order (contact_shock_prepare), so the passes stream through it:
+ * which body is the upper one, and its share of the point's effective mass
+ * with the lower body held still. */
+typedef struct shock_point {
+  vec2 normal, ra, rb;
+  double adjusted, rn_a, rn_b;
+  double mass;         /* up->im + up->ii r_up^2, r_up = r x n at the upper body */
+} shock_point;
+
+typedef struct shock_row {
+  int32_t a, b;        /* solver bodies */
+  int32_t a_is_lower;
+  int32_t count, block;
+  double k11, k12, k22; /* the 2x2 matrix with the lower body held (block) */
+  shock_point p[MANIFOLD_MAX_POINTS];
+} shock_row;
+
+/* The rows of the contacts in `order` where the upper body rests on the
+ * lower one: the normal from lower to upper within 60 degrees of straight
+ * up. Returns how many. */
+static int32_t make_rows (carom_world *world, const step_context *ctx, const int32_t *order, int32_t count)
 {
   vec2 up_dir = v2_neg (v2_normalize (ctx->gravity));
   const contacts *c = &world->contacts;
-  solver_body *sb = world->solver_bodies;
+  const solver_body *sb = world->solver_bodies;
   const int32_t *level = world->solver_scratch;
-  int32_t i, j;
+  shock_row *rows = world->shock_rows;
+  int32_t i, j, n = 0;
   for (i = 0; i < count; ++i)
     {
       const contact *k = &c->list[order[i]];
-      solver_body *a = &sb[k->a], *b = &sb[k->b];
-      /* hold the lower body still: only the upper one takes the impulse */
       int a_is_lower = level[k->a] < level[k->b];
-      solver_body *up = a_is_lower ? b : a;
-      double err[MANIFOLD_MAX_POINTS], x[MANIFOLD_MAX_POINTS], worst = 0.0;
-      /* only where the upper body rests on the lower one: the normal from
-       * lower to upper within 60 degrees of straight up */
+      const solver_body *up = a_is_lower ? &sb[k->b] : &sb[k->a];
       double lift = v2_dot (k->points[0].normal, up_dir);
+      shock_row *r = &rows[n];
       if ((a_is_lower ? lift : -lift) < 0.5)
         continue;
+      r->a = k->a, r->b = k->b;
+      r->a_is_lower = a_is_lower;
+      r->count = k->count;
+      r->block = k->block;
       for (j = 0; j < k->count; ++j)
         {
           const contact_point *p = &k->points[j];
+          shock_point *q = &r->p[j];
+          double r_up = a_is_lower ? p->rn_b : p->rn_a;
+          q->normal = p->normal, q->ra = p->ra, q->rb = p->rb;
+          q->adjusted = p->adjusted, q->rn_a = p->rn_a, q->rn_b = p->rn_b;
+          q->mass = up->im + up->ii * r_up * r_up;
+        }
+      if (k->block)
+        {
+          double r1 = a_is_lower ? k->points[0].rn_b : k->points[0].rn_a;
+          double r2 = a_is_lower ? k->points[1].rn_b : k->points[1].rn_a;
+          double n12 = v2_dot (k->points[0].normal, k->points[1].normal);
+          r->k11 = up->im + up->ii * r1 * r1;
+          r->k12 = up->im * n12 + up->ii * r1 * r2;
+          r->k22 = up->im + up->ii * r2 * r2;
+        }
+      ++n;
+    }
+  return n;
+}
+
+/* The separation of a row's point now, as contact_separation. */
+static inline double row_separation (const solver_body *a, const solver_body *b, const shock_point *p)
+{
+  vec2 d = v2_add (v2_sub (b->dp, a->dp), v2_sub (rot2_apply (b->dq, p->rb), rot2_apply (a->dq, p->ra)));
+  return v2_dot (d, p->normal) + p->adjusted;
+}
+
+static void shock_pass (carom_world *world, const step_context *ctx, double tol)
+{
+  const shock_row *rows = world->shock_rows;
+  solver_body *sb = world->solver_bodies;
+  int32_t i, j;
+  for (i = 0; i < world->shock_count; ++i)
+    {
+      const shock_row *r = &rows[i];
+      solver_body *a = &sb[r->a], *b = &sb[r->b];
+      /* hold the lower body still: only the upper one takes the impulse */
+      solver_body *up = r->a_is_lower ? b : a;
+      double err[MANIFOLD_MAX_POINTS], x[MANIFOLD_MAX_POINTS], worst = 0.0;
+      for (j = 0; j < r->count; ++j)
+        {
+          const shock_point *p = &r->p[j];
           /* the relative normal speed of b against a, as everywhere, against
            * what the point may approach by (a speculative gap) */
-          double s = contact_separation (a, b, p);
+          double s = row_separation (a, b, p);
           err[j] = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + (s > 0.0 ? s * ctx->inv_h : 0.0);
           worst = err[j] < worst ? err[j] : worst;
           x[j] = 0.0;
         }
       if (worst >= -tol)
         continue; /* the iterations did well enough here */
-      if (k->block)
+      if (r->block)
         {
           /* a face: both points at once, so the push does not tip the body */
-          double r1 = a_is_lower ? k->points[0].rn_b : k->points[0].rn_a;
-          double r2 = a_is_lower ? k->points[1].rn_b : k->points[1].rn_a;
-          double n12 = v2_dot (k->points[0].normal, k->points[1].normal);
-          if (!contact_lcp2 (up->im + up->ii * r1 * r1, up->im * n12 + up->ii * r1 * r2, up->im + up->ii * r2 * r2, err[0],
-                     err[1], &x[0], &x[1]))
+          if (!contact_lcp2 (r->k11, r->k12, r->k22, err[0], err[1], &x[0], &x[1]))
             continue;
         }
       else
-        for (j = 0; j < k->count; ++j)
-          {
-            double r = a_is_lower ? k->points[j].rn_b : k->points[j].rn_a, m = up->im + up->ii * r * r;
-            x[j] = err[j] < 0.0 && m > 0.0 ? -err[j] / m : 0.0;
-          }
-      for (j = 0; j < k->count; ++j)
+        for (j = 0; j < r->count; ++j)
+          x[j] = err[j] < 0.0 && r->p[j].mass > 0.0 ? -err[j] / r->p[j].mass : 0.0;
+      for (j = 0; j < r->count; ++j)
         {
-          const contact_point *p = &k->points[j];
-          double r_up = a_is_lower ? p->rn_b : p->rn_a;
+          const shock_point *p = &r->p[j];
+          double r_up = r->a_is_lower ? p->rn_b : p->rn_a;
           /* raising vn: +x n on b, or -x n on a */
-          double lambda = a_is_lower ? x[j] : -x[j];
+          double lambda = r->a_is_lower ? x[j] : -x[j];
           if (x[j] == 0.0)
             continue;
           up->v = v2_mad (up->v, up->im * lambda, p->normal);
           up->w += up->ii * r_up * lambda;
         }
     }
+}
+
+int contact_shock_reserve (carom_world *world)
+{
+  return mem_reserve (&world->allocator, (void **) &world->shock_rows, &world->shock_cap, world->contacts.count,
+                      sizeof (shock_row));
+}
+
+void contact_shock_destroy (carom_world *world)
+{
+  mem_free (&world->allocator, world->shock_rows, (size_t) world->shock_cap * sizeof (shock_row));
+  world->shock_rows = NULL;
+  world->shock_cap = 0;
 }
 
 /* Whether two touching dynamic bodies differ in mass more than tenfold:
@@ -154,10 +224,10 @@ static int heavy_on_light (const carom_world *world)
  * it). */
 void contact_shock_prepare (carom_world *world, const step_context *ctx)
 {
+  int32_t *order = world->solver_scratch + 3 * world->slot_count + 1 + 2 * world->contacts.count;
   world->shock_count = 0;
   if ((ctx->gravity.x != 0.0 || ctx->gravity.y != 0.0) && heavy_on_light (world))
-    world->shock_count = order_by_level (world, world->solver_scratch + 3 * world->slot_count + 1
-                                                    + 2 * world->contacts.count);
+    world->shock_count = make_rows (world, ctx, order, order_by_level (world, order));
 }
 
 /* 0.1% of the speed gravity adds in a sub-step: below that the iterations
@@ -167,6 +237,5 @@ void contact_shock_prepare (carom_world *world, const step_context *ctx)
 void contact_shock (carom_world *world, const step_context *ctx)
 {
   if (world->shock_count > 0)
-    shock_pass (world, ctx, world->solver_scratch + 3 * world->slot_count + 1 + 2 * world->contacts.count,
-                world->shock_count, SHOCK_TOLERANCE * ctx->accel * ctx->h);
+    shock_pass (world, ctx, SHOCK_TOLERANCE * ctx->accel * ctx->h);
 }

@@ -120,6 +120,7 @@ int solver_reserve (carom_world *world)
                          2 * world->contacts.count + 2 * CONSTRAINT_COLOURS + 1, sizeof (int32_t))
          && mem_reserve (&world->allocator, (void **) &world->solver_scratch, &world->scratch_cap, need,
                          sizeof (int32_t))
+         && contact_shock_reserve (world)
          && mem_reserve (&world->allocator, (void **) &world->restitution_list, &world->restitution_cap,
                          world->contacts.count, sizeof (int32_t));
 }
@@ -129,6 +130,7 @@ void solver_destroy (carom_world *world)
   mem_free (&world->allocator, world->solver_bodies, (size_t) world->solver_cap * sizeof (solver_body));
   mem_free (&world->allocator, world->solver_scratch, (size_t) world->scratch_cap * sizeof (int32_t));
   mem_free (&world->allocator, world->restitution_list, (size_t) world->restitution_cap * sizeof (int32_t));
+  contact_shock_destroy (world);
   mem_free (&world->allocator, world->batches, (size_t) world->batch_cap * sizeof (contact_batch));
   mem_free (&world->allocator, world->colour_used, (size_t) world->colour_cap * sizeof (uint32_t));
   mem_free (&world->allocator, world->batch_scratch, (size_t) world->batch_scratch_cap * sizeof (int32_t));

@@ -24,7 +24,9 @@ struct carom_world {
   int32_t solver_cap;
   int32_t *solver_scratch;           /* shock propagation's levels and order */
   int32_t scratch_cap;
-  int32_t shock_count;               /* contacts it orders this step */
+  int32_t shock_count;               /* contacts it may hold this step */
+  struct shock_row *shock_rows;      /* and what it reads of them (shock.c) */
+  int32_t shock_cap;
   int32_t *restitution_list;         /* the struck contacts of a step */
   int32_t restitution_cap;
   struct contact_batch *batches;     /* the coloured contacts, four a batch (contact_batch.c) */
