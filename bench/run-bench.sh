@@ -140,6 +140,11 @@ if command -v valgrind >/dev/null 2>&1 && command -v callgrind_annotate >/dev/nu
       --toggle-collect=carom_world_update "$B/bench_carom" scene="$s" warmup=0 steps="$st" >/dev/null 2>&1 || PROFILE=no
     callgrind_annotate --auto=no --threshold=100 --inclusive=yes "$B/callgrind.$s.out" >"$B/profile-$s-inclusive.txt" 2>/dev/null || PROFILE=no
     callgrind_annotate --auto=no --threshold=100 --inclusive=no "$B/callgrind.$s.out" >"$B/profile-$s-exclusive.txt" 2>/dev/null || PROFILE=no
+    # the same steps in Box2D v3, for instructions per step side by side
+    if [ -x "$B/bench_box2d3" ]; then
+      valgrind -q --tool=callgrind --callgrind-out-file="$B/callgrind.box2d3.$s.out" \
+        --toggle-collect=b2World_Step "$B/bench_box2d3" scene="$s" warmup=0 steps="$st" >/dev/null 2>&1 || true
+    fi
   done
   echo "run-bench: profiles in $B/callgrind.*.out, $B/profile-*.txt" >&2
 fi
@@ -164,6 +169,9 @@ by_function () {
     END { for (f in sum) if (total > 0) printf "%.1f %s\n", 100 * sum[f] / total, f }
   ' "$1" | sort -rg
 }
+# the instructions a callgrind run counted, and that over the steps in millions
+total_ir () { [ -f "$1" ] && sed -n 's/^summary: *//p; s/^totals: *//p' "$1" | head -n 1; }
+per_step () { awk -v a="$1" -v n="$2" 'BEGIN { if (a + 0 > 0) printf "%.2fM", a / n / 1e6; else print "-" }'; }
 incl () { by_function "$1" max | awk -v f="$2" '$2 == f { print $1; found = 1 } END { if (!found) print "0.0" }'; }
 excl () { by_function "$1" sum | awk -v f="$2" '$2 == f { print $1; found = 1 } END { if (!found) print "0.0" }'; }
 
@@ -426,6 +434,15 @@ EOF
       sol=$(incl "$inc" solver_step)
       echo "### $s"
       echo
+      st=120; [ "$s" = rain ] && st=300
+      ir_c=$(total_ir "$B/callgrind.$s.out")
+      ir_b=$(total_ir "$B/callgrind.box2d3.$s.out")
+      if [ -n "$ir_b" ]; then
+        echo "Instructions per step: carom $(per_step "$ir_c" "$st"), Box2D v3 $(per_step "$ir_b" "$st") (b2World_Step counted the same way), carom / Box2D v3 $(ratio "$ir_c" "$ir_b")."
+      else
+        echo "Instructions per step: carom $(per_step "$ir_c" "$st") (Box2D v3 not built for this run)."
+      fi
+      echo
       echo "Stages: detection $det% (of which the broad phase's own sweep and sort $bro%, the narrow phase and contact matching $nar%), solver $sol%, the rest (integration, gravity, bookkeeping) $(awk -v a="$det" -v b="$sol" 'BEGIN { printf "%.1f", 100 - a - b }')%."
       echo
       echo "| function | inclusive % | exclusive % |"
@@ -464,19 +481,23 @@ EOF
 
 - **Detection runs once per step; the solver four times.** Contacts are
   found once per update and solved in every sub-step from the bodies'
-  motion, so sub-steps cost no extra detection (before this, four sub-steps
-  cost four detections and about four times the time). The solver's passes
-  still run one contact point at a time, in double precision, over the
-  contact records themselves; Box2D v3 solves four or eight contacts at once
-  in float SIMD, grouped by graph colour, from a compact constraint array.
-  Planned, in order, each only with measurements showing it pays: a
-  separate constraint array, then colouring and SIMD in double.
+  motion, so sub-steps cost no extra detection. The contact graph is
+  coloured and each colour solved four contacts at a time, in double
+  precision, with AVX2 where the CPU has it (lib/contact_batch.c; the
+  portable path gives the same bits). What carom's solver does that Box2D
+  v3's does not, and pays for: the exact 2x2 solve of two-point faces (both
+  its cases are computed for the four lanes), the separate push-out pass
+  (split impulses, so position correction adds no energy), and shock
+  propagation in piles of mixed masses (the rain: its passes are the
+  contact_shock rows). Box2D v3 solves in float, eight lanes with AVX2.
 - **The narrow phase** is skipped for a SAT pair that barely moved since its
   points were computed (`manifold_tolerance`, default 0.01: from its second
   second on, the pyramid keeps 99.98% of its manifolds; docs/accuracy.md
-  measures the knob), but every pair is still matched again through a hash each step:
-  contacts that persist while the bodies' enlarged boxes overlap are
-  planned next.
+  measures the knob), but every pair is still matched again through a hash
+  each step, and every contact's lever arms, masses and batch lanes are set
+  up again (contact_prepare, contact_batch_prepare): contacts that persist
+  while the bodies' enlarged boxes overlap, keeping all of that in place,
+  are what is planned next.
 - **The broad phase** is a sort and sweep below 4096 bodies and a uniform
   grid above (the sweep's strip tests grow as n sqrt(n) in crowded worlds:
   the gas at 100k bodies went from 65 to 42 ms per step with the grid, one

@@ -271,7 +271,6 @@ static inline wide w_set1 (double d) { wide r; LANEWISE (d); }
 static inline wide w_add (wide a, wide b) { wide r; LANEWISE (a.l[i] + b.l[i]); }
 static inline wide w_sub (wide a, wide b) { wide r; LANEWISE (a.l[i] - b.l[i]); }
 static inline wide w_mul (wide a, wide b) { wide r; LANEWISE (a.l[i] * b.l[i]); }
-static inline wide w_div (wide a, wide b) { wide r; LANEWISE (a.l[i] / b.l[i]); }
 static inline wide w_neg (wide a) { wide r; LANEWISE (-a.l[i]); }
 static inline wide w_max (wide a, wide b) { wide r; LANEWISE (a.l[i] > b.l[i] ? a.l[i] : b.l[i]); }
 static inline wide w_min (wide a, wide b) { wide r; LANEWISE (a.l[i] < b.l[i] ? a.l[i] : b.l[i]); }
@@ -290,7 +289,6 @@ static inline int m_any (wmask m) { return m.l[0] | m.l[1] | m.l[2] | m.l[3]; }
 #define W_ADD w_add
 #define W_SUB w_sub
 #define W_MUL w_mul
-#define W_DIV w_div
 #define W_NEG w_neg
 #define W_MAX w_max
 #define W_MIN w_min

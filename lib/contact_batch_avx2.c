@@ -19,7 +19,6 @@ typedef __m256d wmask;
 #define W_ADD _mm256_add_pd
 #define W_SUB _mm256_sub_pd
 #define W_MUL _mm256_mul_pd
-#define W_DIV _mm256_div_pd
 #define W_NEG(a) _mm256_xor_pd ((a), _mm256_set1_pd (-0.0))
 /* (v)maxpd and (v)minpd: a > b ? a : b and a < b ? a : b, lane by lane */
 #define W_MAX _mm256_max_pd
