@@ -105,6 +105,7 @@ check: deps-check
 	tools/check-part $(CHECK_LOG) tools/run-tests "$(VALGRIND)" $(TEST_BIN) || rc=1; \
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-readme $(BUILD) || rc=1; }; \
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-exports $(BUILD) || rc=1; }; \
+	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-api-doc || rc=1; }; \
 	for part in $(CHECK_PARTS); do \
 	  [ $$rc -eq 0 ] || break; \
 	  tools/check-part $(CHECK_LOG) $(MAKE) --no-print-directory $$part || { rc=1; echo "check: $$part FAILED"; }; \

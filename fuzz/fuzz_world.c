@@ -21,7 +21,9 @@
  *      changed; STATIC_BODY for a static body's velocity), the effects
  *      (restitution, friction, central gravity, damping, sleeping, fixed
  *      rotation, wake, continuous collision for the world or one body), add
- *      a body, detect, calls with stale and made-up ids.
+ *      a body, detect, calls with stale and made-up ids, and the calls of
+ *      version 0.2 (forces, impulses, filters, user data, ray casts,
+ *      queries, events, the debug draw: op_api).
  * After every operation every body's state and every contact must be finite.
  *
  * Extreme but finite values are fed to every call. include/carom.h bounds
@@ -93,6 +95,8 @@ static void report_status (const char *call, carom_status got, unsigned allowed)
 /* The size of version 0.1's carom_world_def, which ended at the allocator:
  * the library takes it as well as its own. */
 #define WORLD_DEF_0_1_SIZE (offsetof (carom_world_def, allocator) + sizeof (carom_allocator))
+/* And of its carom_body_def, which ended at friction. */
+#define BODY_DEF_0_1_SIZE (offsetof (carom_body_def, friction) + sizeof (double))
 
 /* The statuses carom_world_init may return for `d` (0: it must accept). */
 static unsigned world_def_problems (const carom_world_def *d)
@@ -228,7 +232,7 @@ static void add_fuzzed_body (fuzz_world *f)
   unsigned problems = 0, extreme_ok;
   double size1 = fuzz_number (in, 0), size2 = 1.0, xy[16];
   int32_t n = 0, before = carom_world_body_count (f->w), i;
-  int must_accept;
+  int must_accept, known_size;
   carom_status s;
 
   if (carom_body_def_init (&d, sizeof d) != CAROM_OK)
@@ -253,21 +257,33 @@ static void add_fuzzed_body (fuzz_world *f)
     d.type = (carom_body_type) (int32_t) fuzz_u32 (in); /* mostly not a type */
   if ((flags & 0x82) == 0x82 && fuzz_u8 (in) < 16)
     d.size = fuzz_u32 (in);
+  if ((flags & 0x84) == 0x84)
+    {
+      /* version 0.2: kinematic, sensor, filter */
+      uint8_t more = fuzz_u8 (in);
+      if (more & 1)
+        d.type = CAROM_KINEMATIC;
+      d.sensor = (more & 2) != 0;
+      if (more & 4)
+        d.category = fuzz_u32 (in), d.mask = fuzz_u32 (in), d.group = (int32_t) fuzz_u32 (in);
+    }
 
-  /* the def's own problems, in include/carom.h's terms */
-  if (d.size != sizeof d)
+  /* the def's own problems, in include/carom.h's terms (0.1's size is
+   * known too: the fields of 0.2 keep their defaults then) */
+  known_size = d.size == sizeof d || d.size == BODY_DEF_0_1_SIZE;
+  if (!known_size)
     problems |= BIT (CAROM_ERR_BAD_STRUCT_SIZE);
   if (!fuzz_finite6 (d.x, d.y, d.angle, d.vx, d.vy, d.spin) || !isfinite (d.density) || !isfinite (d.restitution)
       || !isfinite (d.friction))
     problems |= BIT (CAROM_ERR_NOT_FINITE);
-  if ((d.type != CAROM_DYNAMIC && d.type != CAROM_STATIC) || too_big (d.x) || too_big (d.y) || too_big (d.angle)
+  if ((d.type != CAROM_DYNAMIC && d.type != CAROM_STATIC && d.type != CAROM_KINEMATIC) || too_big (d.x) || too_big (d.y) || too_big (d.angle)
       || too_big (d.vx) || too_big (d.vy) || too_big (d.spin))
     problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
   if (isfinite (d.density) && d.density <= 0.0)
     problems |= BIT (CAROM_ERR_BAD_DENSITY);
   if (isfinite (d.restitution) && d.restitution > 1.0)
     problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
-  if (d.size != sizeof d)
+  if (!known_size)
     problems = BIT (CAROM_ERR_BAD_STRUCT_SIZE); /* nothing else is read */
 
   /* the shape's (a polygon's size1 scales its outline, any sign; its extent
@@ -573,7 +589,7 @@ static void op_effects (fuzz_world *f)
         return;
       carom_body_get_type (f->w, f->ids[k], &type);
       s = carom_body_set_fixed_rotation (f->w, f->ids[k], a > 0.0);
-      if (type == CAROM_STATIC)
+      if (type != CAROM_DYNAMIC) /* static and kinematic bodies have no inertia to fix */
         problems = BIT (CAROM_ERR_STATIC_BODY);
       else if (s == CAROM_OK)
         f->fixed[k] = a > 0.0;
@@ -603,6 +619,140 @@ static void op_effects (fuzz_world *f)
   else if (s != CAROM_OK)
     FUZZ_FINDING ("effect setter %d (%g, %g, %g, %g) returned %d (%s)", what, a, b, c, d, (int) s,
                   carom_status_string (s));
+}
+
+/* ------------------------------------------------------ version 0.2 calls */
+
+static void count_polygon (const double *xy, int32_t count, carom_body_id body, void *user)
+{
+  (void) xy, (void) count, (void) body;
+  ++*(int *) user;
+}
+
+static void count_circle (double x, double y, double r, double angle, carom_body_id body, void *user)
+{
+  (void) x, (void) y, (void) r, (void) angle, (void) body;
+  ++*(int *) user;
+}
+
+/* Forces, impulses, filters, user data, ray casts, queries, events and the
+ * debug draw with fuzzed arguments: non-finite numbers give NOT_FINITE,
+ * ones beyond CAROM_MAX_MAGNITUDE BAD_ARGUMENT (also a sum or a resulting
+ * velocity beyond it), a static or kinematic body STATIC_BODY for forces
+ * and impulses, and nothing changes then; what is accepted leaves the
+ * world finite, and what the queries report is consistent. */
+static void op_api (fuzz_world *f)
+{
+  state before[64];
+  uint8_t what = fuzz_u8 (&f->in) % 10;
+  int k = f->count ? fuzz_u8 (&f->in) % f->count : 0;
+  double a = fuzz_number (&f->in, 0), b = fuzz_number (&f->in, 0), c = fuzz_number (&f->in, 0),
+         d = fuzz_number (&f->in, 0);
+  uint32_t mask = fuzz_u32 (&f->in);
+  carom_body_id id = f->count ? f->ids[k] : 0;
+  carom_body_type type = CAROM_DYNAMIC;
+  carom_status s = CAROM_OK;
+  int finite = isfinite (a) && isfinite (b) && isfinite (c) && isfinite (d);
+  int big = too_big (a) || too_big (b) || too_big (c) || too_big (d);
+  if (f->count == 0 && what < 6)
+    return;
+  if (f->count)
+    carom_body_get_type (f->w, id, &type);
+  TRACE ("api %d body %d (%.17g, %.17g, %.17g, %.17g) mask %x\n", what, k, a, b, c, d, mask);
+  read_states (f, before);
+  if (what < 4)
+    {
+      switch (what)
+        {
+        case 0: s = carom_body_apply_force (f->w, id, a, b, c, d); break;
+        case 1: s = carom_body_apply_torque (f->w, id, a), finite = isfinite (a), big = too_big (a); break;
+        case 2: s = carom_body_apply_impulse (f->w, id, a, b, c, d); break;
+        default: s = carom_body_apply_angular_impulse (f->w, id, a), finite = isfinite (a), big = too_big (a); break;
+        }
+      if (type != CAROM_DYNAMIC ? s != CAROM_ERR_STATIC_BODY
+          : !finite                ? s != CAROM_ERR_NOT_FINITE
+          : big                    ? s != CAROM_ERR_BAD_ARGUMENT
+                                   : s != CAROM_OK && s != CAROM_ERR_BAD_ARGUMENT)
+        FUZZ_FINDING ("force or impulse call %d (%g, %g, %g, %g) on a body of type %d returned %d", what, a, b, c, d,
+                      (int) type, (int) s);
+      if (s != CAROM_OK)
+        expect_unchanged (f, before, "a refused force or impulse");
+      if (s == CAROM_OK && what < 2)
+        carom_world_clear_forces (f->w); /* else most updates after would be refused as too strong */
+      return;
+    }
+  switch (what)
+    {
+    case 4:
+      {
+        uint32_t cat, m;
+        int32_t g;
+        if (carom_body_set_filter (f->w, id, (uint32_t) fuzz_u32 (&f->in), mask, (int32_t) fuzz_u32 (&f->in))
+                != CAROM_OK
+            || carom_body_get_filter (f->w, id, &cat, &m, &g) != CAROM_OK || m != mask)
+          FUZZ_FINDING ("set_filter and get_filter disagree");
+        break;
+      }
+    case 5:
+      {
+        void *p = NULL;
+        if (carom_body_set_user_data (f->w, id, f) != CAROM_OK || carom_body_get_user_data (f->w, id, &p) != CAROM_OK
+            || p != f)
+          FUZZ_FINDING ("user data did not come back");
+        break;
+      }
+    case 6:
+      {
+        carom_ray_hit hit;
+        hit.body = 4242;
+        s = carom_world_cast_ray (f->w, a, b, c, d, mask, &hit);
+        if (!finite ? s != CAROM_ERR_NOT_FINITE : big ? s != CAROM_ERR_BAD_ARGUMENT : s != CAROM_OK)
+          FUZZ_FINDING ("cast_ray (%g, %g, %g, %g) returned %d", a, b, c, d, (int) s);
+        if (s != CAROM_OK && hit.body != 4242)
+          FUZZ_FINDING ("a refused cast_ray wrote its hit");
+        if (s == CAROM_OK && hit.body != CAROM_NULL_BODY
+            && (carom_body_check (f->w, hit.body) != CAROM_OK || !(hit.fraction >= 0.0 && hit.fraction <= 1.0)
+                || !isfinite (hit.x) || !isfinite (hit.y) || !isfinite (hit.nx) || !isfinite (hit.ny)))
+          FUZZ_FINDING ("cast_ray hit a body that is not there, or at a bad fraction %g", hit.fraction);
+        break;
+      }
+    case 7:
+    case 8:
+      {
+        carom_body_id ids[64];
+        int32_t n = what == 7 ? carom_world_query_aabb (f->w, a, b, c, d, mask, ids, 64)
+                              : carom_world_query_point (f->w, a, b, mask, ids, 64);
+        int bad_box = what == 7 && finite && !big && (a > c || b > d);
+        int ok_numbers = what == 7 ? finite : isfinite (a) && isfinite (b);
+        int ok_size = what == 7 ? !big : !too_big (a) && !too_big (b);
+        if (!ok_numbers ? n != -CAROM_ERR_NOT_FINITE
+            : !ok_size || bad_box ? n != -CAROM_ERR_BAD_ARGUMENT
+                                  : n < 0 || n > carom_world_body_count (f->w))
+          FUZZ_FINDING ("query %d (%g, %g, %g, %g) returned %d", what, a, b, c, d, (int) n);
+        for (k = 0; k < n && k < 64; ++k)
+          if (carom_body_check (f->w, ids[k]) != CAROM_OK)
+            FUZZ_FINDING ("a query returned a body that is not there");
+        break;
+      }
+    default:
+      {
+        carom_contact_event ev[32];
+        carom_debug_draw draw;
+        int drawn = 0;
+        int32_t n = carom_world_get_events (f->w, ev, 32);
+        if (n < 0)
+          FUZZ_FINDING ("get_events returned %d", (int) n);
+        for (k = 0; k < n && k < 32; ++k)
+          if ((int) ev[k].type < 0 || ev[k].type > CAROM_EVENT_SENSOR_END || !isfinite (ev[k].x)
+              || !isfinite (ev[k].approach_speed) || !isfinite (ev[k].normal_impulse))
+            FUZZ_FINDING ("event %d is not one", (int) k);
+        carom_debug_draw_init (&draw, sizeof draw);
+        draw.polygon = count_polygon, draw.circle = count_circle, draw.user = &drawn;
+        if (carom_world_draw (f->w, &draw) != CAROM_OK || drawn != carom_world_body_count (f->w))
+          FUZZ_FINDING ("the debug draw drew %d bodies of %d", drawn, (int) carom_world_body_count (f->w));
+        break;
+      }
+    }
 }
 
 /* Ids that name nothing: removed ones, 0, and made-up ones. */
@@ -644,7 +794,7 @@ int LLVMFuzzerTestOneInput (const uint8_t *data, size_t size)
   ops = fuzz_u8 (&f.in) % (MAX_OPS + 1);
   for (i = 0; i < ops && f.in.n > 0; ++i)
     {
-      switch (fuzz_u8 (&f.in) % 9)
+      switch (fuzz_u8 (&f.in) % 10)
         {
         case 0:
         case 1:
@@ -657,6 +807,7 @@ int LLVMFuzzerTestOneInput (const uint8_t *data, size_t size)
             FUZZ_FINDING ("detect failed");
           break;
         case 7: op_effects (&f); break;
+        case 8: op_api (&f); break;
         default: op_bad_ids (&f); break;
         }
       fuzz_check_world (f.w, "after an operation");

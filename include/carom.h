@@ -175,8 +175,10 @@ CAROM_API void carom_world_destroy (carom_world *world);
 /**
  * Advance the world by `dt` (time units, 1e-100 <= dt <= 1e100): collision
  * detection once, then forces, collision resolution and integration in
- * `substeps` sub-steps. Errors: NULL_ARGUMENT, BAD_TIME_STEP and
- * OUT_OF_MEMORY change nothing (memory is only asked for before the first
+ * `substeps` sub-steps. Errors: NULL_ARGUMENT, BAD_TIME_STEP, BAD_ARGUMENT
+ * (the forces applied would change a velocity by more than
+ * CAROM_MAX_MAGNITUDE: carom_world_clear_forces) and OUT_OF_MEMORY change
+ * nothing (memory is only asked for before the first
  * sub-step); after OUT_OF_MEMORY the world is valid and usable, and the
  * same update, repeated, gives what it would have given.
  */
@@ -226,8 +228,12 @@ CAROM_API carom_status carom_world_get_contact (const carom_world *world,
 /* ----------------------------------------------------------------- bodies */
 
 typedef enum carom_body_type {
-  CAROM_DYNAMIC = 0, /**< moves under forces and impulses */
+  CAROM_DYNAMIC = 0, /**< moves under gravity, contacts, forces and impulses */
   CAROM_STATIC = 1,  /**< never moves: infinite mass (zero inverse mass) */
+  /** moves at the velocity and spin it is given, whatever touches it:
+   * infinite mass (pushes dynamic bodies, is never pushed), no gravity, no
+   * forces; never sleeps (version 0.2) */
+  CAROM_KINEMATIC = 2,
   CAROM_BODY_TYPE_FORCE_32 = 0x7fffffff
 } carom_body_type;
 
@@ -249,9 +255,24 @@ typedef struct carom_body_def {
   double density;       /**< mass per unit area, > 0; default 1 */
   double restitution;   /**< e in [0, 1], or < 0 for the world default */
   double friction;      /**< mu >= 0, or < 0 for the world default */
+  /* ---- version 0.2 */
+  void *user_data;      /**< the caller's, returned by
+                             carom_body_get_user_data; default NULL */
+  uint32_t category;    /**< collision filtering: the body's category bits;
+                             default 1 */
+  uint32_t mask;        /**< the categories it collides with; default all
+                             bits. Bodies a and b collide when
+                             (a.category & b.mask) && (b.category & a.mask) */
+  int32_t group;        /**< non-zero: two bodies of the same group always
+                             collide (> 0) or never (< 0), whatever their
+                             bits; default 0 */
+  int32_t sensor;       /**< non-zero: the body reports what overlaps it as
+                             CAROM_EVENT_SENSOR_* events and neither pushes
+                             nor is pushed by anything; default 0 */
 } carom_body_def;
 
-/** Fill `def` with the defaults above, as carom_world_def_init does. */
+/** Fill `def` with the defaults above, as carom_world_def_init does (0.1's
+ * size, without the version 0.2 fields, is accepted too). */
 CAROM_API carom_status carom_body_def_init (carom_body_def *def,
                                             uint32_t size);
 
@@ -363,6 +384,189 @@ CAROM_API carom_status carom_body_get_vertices (const carom_world *world,
                                                 carom_body_id id, double *xy,
                                                 int32_t capacity,
                                                 int32_t *count);
+
+/* ----------------------------------------------- forces, data, filtering */
+
+/**
+ * Forces (version 0.2). A force (fx, fy) at the world point (px, py), and a
+ * torque, act on a dynamic body over the next carom_world_update (each
+ * sub-step's velocity change is F h / m, and (p - c) x F h / I, c the centre
+ * of mass) and are then cleared; calls add up. Wakes the body. Errors:
+ * NULL_ARGUMENT, STALE_BODY, NOT_FINITE, BAD_ARGUMENT (a magnitude over
+ * CAROM_MAX_MAGNITUDE), STATIC_BODY (static and kinematic bodies take no
+ * forces).
+ */
+CAROM_API carom_status carom_body_apply_force (carom_world *world,
+                                               carom_body_id id, double fx,
+                                               double fy, double px,
+                                               double py);
+CAROM_API carom_status carom_body_apply_torque (carom_world *world,
+                                                carom_body_id id,
+                                                double torque);
+/** Drop every force and torque not yet applied (as an update does after
+ * applying them). carom_world_update refuses, with BAD_ARGUMENT, forces
+ * that would change a velocity by more than CAROM_MAX_MAGNITUDE over its
+ * dt; this is the way out. Errors: NULL_ARGUMENT. */
+CAROM_API carom_status carom_world_clear_forces (carom_world *world);
+
+/**
+ * Impulses (version 0.2): an impulse (jx, jy) at the world point (px, py)
+ * changes the velocity at once by J / m and the spin by (p - c) x J / I; an
+ * angular impulse changes the spin by j / I. Wakes the body. Errors as
+ * carom_body_apply_force (a non-rotating body takes no spin).
+ */
+CAROM_API carom_status carom_body_apply_impulse (carom_world *world,
+                                                 carom_body_id id, double jx,
+                                                 double jy, double px,
+                                                 double py);
+CAROM_API carom_status carom_body_apply_angular_impulse (carom_world *world,
+                                                         carom_body_id id,
+                                                         double j);
+
+/** The caller's pointer kept with a body (version 0.2). Errors:
+ * NULL_ARGUMENT, STALE_BODY. */
+CAROM_API carom_status carom_body_get_user_data (const carom_world *world,
+                                                 carom_body_id id,
+                                                 void **data);
+CAROM_API carom_status carom_body_set_user_data (carom_world *world,
+                                                 carom_body_id id,
+                                                 void *data);
+
+/** A body's collision filter (carom_body_def's category, mask and group),
+ * in effect from the next update (version 0.2). Wakes the body. Errors:
+ * NULL_ARGUMENT, STALE_BODY. */
+CAROM_API carom_status carom_body_set_filter (carom_world *world,
+                                              carom_body_id id,
+                                              uint32_t category,
+                                              uint32_t mask, int32_t group);
+CAROM_API carom_status carom_body_get_filter (const carom_world *world,
+                                              carom_body_id id,
+                                              uint32_t *category,
+                                              uint32_t *mask, int32_t *group);
+/** Whether a body is a sensor (1) or not (0) (version 0.2). */
+CAROM_API carom_status carom_body_is_sensor (const carom_world *world,
+                                             carom_body_id id,
+                                             int32_t *sensor);
+
+/* ---------------------------------------------------------------- queries */
+
+/** The first body a ray meets (carom_world_cast_ray). */
+typedef struct carom_ray_hit {
+  carom_body_id body;  /**< CAROM_NULL_BODY when nothing was hit */
+  double x, y;         /**< where it meets the body's outline */
+  double nx, ny;       /**< the outline's outward unit normal there */
+  double fraction;     /**< of the segment, in [0, 1], to the hit */
+} carom_ray_hit;
+
+/**
+ * The first body the segment from (x0, y0) to (x1, y1) enters, among those
+ * whose category & mask is non-zero (sensors included): on the true
+ * outline (circles, concave polygons too), with the outward normal there
+ * and the fraction of the segment. A body the segment starts inside is hit
+ * only where the segment enters it again. Nothing hit: hit->body is
+ * CAROM_NULL_BODY, status OK. Bodies in any state count, sleeping ones
+ * included; it looks at every body's bounding box (O(bodies)). Errors:
+ * NULL_ARGUMENT (world, hit), NOT_FINITE, BAD_ARGUMENT (a coordinate over
+ * CAROM_MAX_MAGNITUDE); *hit is unchanged then.
+ */
+CAROM_API carom_status carom_world_cast_ray (const carom_world *world,
+                                             double x0, double y0, double x1,
+                                             double y1, uint32_t mask,
+                                             carom_ray_hit *hit);
+
+/**
+ * The bodies whose tight bounding box overlaps the box [x0, x1] x [y0, y1]
+ * (edges included), and those whose shape contains the point (x, y) (the
+ * true outline: a concave polygon's notch does not), among those whose
+ * category & mask is non-zero, in creation order. Both write up to
+ * `capacity` ids and return how many bodies there are, as
+ * carom_world_get_bodies does; on bad input they write nothing and return
+ * minus a carom_status: -CAROM_ERR_NULL_ARGUMENT (world, or ids with a
+ * capacity > 0), -CAROM_ERR_NOT_FINITE, -CAROM_ERR_BAD_ARGUMENT (a
+ * negative capacity, x0 > x1 or y0 > y1, a coordinate over
+ * CAROM_MAX_MAGNITUDE).
+ */
+CAROM_API int32_t carom_world_query_aabb (const carom_world *world, double x0,
+                                          double y0, double x1, double y1,
+                                          uint32_t mask, carom_body_id *ids,
+                                          int32_t capacity);
+CAROM_API int32_t carom_world_query_point (const carom_world *world, double x,
+                                           double y, uint32_t mask,
+                                           carom_body_id *ids,
+                                           int32_t capacity);
+
+/* ----------------------------------------------------------------- events */
+
+typedef enum carom_event_type {
+  CAROM_EVENT_CONTACT_BEGIN = 0, /**< two bodies began to touch */
+  CAROM_EVENT_CONTACT_END = 1,   /**< they stopped (or one was removed) */
+  CAROM_EVENT_SENSOR_BEGIN = 2,  /**< a body began to overlap sensor a */
+  CAROM_EVENT_SENSOR_END = 3,    /**< it stopped (or one was removed) */
+  CAROM_EVENT_TYPE_FORCE_32 = 0x7fffffff
+} carom_event_type;
+
+/** What happened between two bodies in the last update. */
+typedef struct carom_contact_event {
+  carom_event_type type;
+  carom_body_id a, b;     /**< for sensor events, a is the sensor */
+  double x, y;            /**< begin: a point of the contact (sensor: b's
+                               centre); end: where it was last */
+  double nx, ny;          /**< begin: the unit normal from a to b (sensor:
+                               0, 0) */
+  double approach_speed;  /**< contact begin: how fast the points closed at
+                               the start of the update, >= 0 */
+  double normal_impulse;  /**< contact begin: the normal impulse the
+                               contact gave in the update (restitution's
+                               included); 0 otherwise */
+} carom_contact_event;
+
+/**
+ * The events of the last carom_world_update, in a fixed order (begins in
+ * contact order, then ends; contacts before sensors). Two bodies touch when
+ * some point of theirs overlaps or received impulse in the update; a pair
+ * begins when it touches and did not in the update before, ends when it
+ * did and does not, or when one of its bodies was removed (the id is then
+ * stale). Every begin is followed, some updates later, by one end. Writes up
+ * to `capacity` events and returns how many there were; bad input as
+ * carom_world_query_aabb (-CAROM_ERR_NULL_ARGUMENT, -CAROM_ERR_BAD_ARGUMENT).
+ */
+CAROM_API int32_t carom_world_get_events (const carom_world *world,
+                                          carom_contact_event *events,
+                                          int32_t capacity);
+
+/* ------------------------------------------------------------- debug draw */
+
+/**
+ * Callbacks carom_world_draw calls to draw a world (any may be NULL: that
+ * kind is not drawn). Fill with carom_debug_draw_init, then set fields.
+ */
+typedef struct carom_debug_draw {
+  uint32_t size;  /**< the caller's sizeof, set by def_init */
+  /** a polygon body's outline, counter-clockwise, in world coordinates */
+  void (*polygon) (const double *xy, int32_t count, carom_body_id body,
+                   void *user);
+  /** a circle body (angle: where its radius marker points) */
+  void (*circle) (double x, double y, double radius, double angle,
+                  carom_body_id body, void *user);
+  /** a contact's normal, from its point, 0.2 of the smaller body's size long */
+  void (*segment) (double x0, double y0, double x1, double y1, void *user);
+  /** a contact point */
+  void (*point) (double x, double y, void *user);
+  void *user;             /**< passed to every callback */
+  int32_t draw_bodies;    /**< default 1 */
+  int32_t draw_contacts;  /**< points and normals of the last update's
+                               contacts; default 1 */
+} carom_debug_draw;
+
+/** Fill `draw` with no callbacks and the defaults above. Errors:
+ * NULL_ARGUMENT, BAD_STRUCT_SIZE. */
+CAROM_API carom_status carom_debug_draw_init (carom_debug_draw *draw,
+                                              uint32_t size);
+
+/** Draw every live body in creation order, then the contacts. Errors:
+ * NULL_ARGUMENT, BAD_STRUCT_SIZE. */
+CAROM_API carom_status carom_world_draw (const carom_world *world,
+                                         const carom_debug_draw *draw);
 
 /* ---------------------------------------------------------------- effects */
 

@@ -98,7 +98,7 @@ static carom_status check_def (const carom_body_def *def)
   if (!is_moderate (def->x) || !is_moderate (def->y) || !is_moderate (def->angle) || !is_moderate (def->vx)
       || !is_moderate (def->vy) || !is_moderate (def->spin))
     return CAROM_ERR_BAD_ARGUMENT;
-  if (def->type != CAROM_DYNAMIC && def->type != CAROM_STATIC)
+  if (def->type != CAROM_DYNAMIC && def->type != CAROM_STATIC && def->type != CAROM_KINEMATIC)
     return CAROM_ERR_BAD_ARGUMENT;
   if (def->density <= 0.0)
     return CAROM_ERR_BAD_DENSITY;
@@ -176,6 +176,16 @@ static carom_body_id commit_body (carom_world *world, const carom_body_def *def,
   b->angle = def->angle;
   b->restitution = def->restitution;
   b->friction = def->friction;
+  b->user_data = def->user_data;
+  b->category = def->category;
+  b->mask = def->mask;
+  b->group = def->group;
+  b->sensor = def->sensor != 0;
+  if (def->type == CAROM_KINEMATIC)
+    {
+      b->v = v2 (def->vx, def->vy);
+      b->w = def->spin;
+    }
   if (def->type == CAROM_DYNAMIC)
     {
       b->v = v2 (def->vx, def->vy);
@@ -186,6 +196,7 @@ static carom_body_id commit_body (carom_world *world, const carom_body_def *def,
       b->inv_inertia = 1.0 / b->inertia;
     }
   body_sync (b);
+  world->sensor_count += b->sensor;
   world->live_count++;
   world->broad.dirty = 1;
   return body_id_of (world, slot);
@@ -340,6 +351,7 @@ carom_status carom_world_remove_body (carom_world *world, carom_body_id id)
   slot = (int32_t) (b - world->bodies);
   contacts_forget_body (world, slot); /* also wakes the bodies it touched */
   shape_destroy (&b->shape, &world->allocator);
+  world->sensor_count -= b->sensor;
   b->alive = 0;
   b->generation = b->generation == UINT32_MAX ? 1 : b->generation + 1;
   world->free_slots[world->free_count++] = slot; /* room reserved at creation */
@@ -498,7 +510,7 @@ carom_status carom_body_set_fixed_rotation (carom_world *world, carom_body_id id
 {
   body *b;
   LOOKUP (world, id, b);
-  if (b->type == CAROM_STATIC)
+  if (b->type != CAROM_DYNAMIC)
     return CAROM_ERR_STATIC_BODY;
   body_wake (b);
   b->fixed_rotation = fixed != 0;
@@ -589,5 +601,58 @@ carom_status carom_body_get_vertices (const carom_world *world, carom_body_id id
       xy[2 * i] = v.x;
       xy[2 * i + 1] = v.y;
     }
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_user_data (const carom_world *world, carom_body_id id, void **data)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (data)
+    *data = b->user_data;
+  return CAROM_OK;
+}
+
+carom_status carom_body_set_user_data (carom_world *world, carom_body_id id, void *data)
+{
+  body *b;
+  LOOKUP (world, id, b);
+  b->user_data = data;
+  return CAROM_OK;
+}
+
+carom_status carom_body_set_filter (carom_world *world, carom_body_id id, uint32_t category, uint32_t mask,
+                                    int32_t group)
+{
+  body *b;
+  LOOKUP (world, id, b);
+  b->category = category;
+  b->mask = mask;
+  b->group = group;
+  /* a body asleep on what it may no longer touch must fall */
+  body_wake (b);
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_filter (const carom_world *world, carom_body_id id, uint32_t *category, uint32_t *mask,
+                                    int32_t *group)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (category)
+    *category = b->category;
+  if (mask)
+    *mask = b->mask;
+  if (group)
+    *group = b->group;
+  return CAROM_OK;
+}
+
+carom_status carom_body_is_sensor (const carom_world *world, carom_body_id id, int32_t *sensor)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (sensor)
+    *sensor = b->sensor;
   return CAROM_OK;
 }

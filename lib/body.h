@@ -26,6 +26,13 @@ typedef struct body {
   int32_t bullet;         /* continuous collision even when the world's is off */
   int32_t asleep;         /* sleeping: zero inverse mass, not moved */
   double sleep_time;      /* how long it has been slow enough to sleep */
+  /* what the program asked for (version 0.2) */
+  vec2 force;             /* over the next update (force.c) */
+  double torque;          /* about the centre of mass */
+  void *user_data;
+  uint32_t category, mask;
+  int32_t group;
+  int32_t sensor;         /* reports overlaps, takes part in no contact */
 } body;
 
 struct carom_world;
@@ -36,6 +43,11 @@ void bodies_destroy (struct carom_world *world);
 /* The live body an id names, or NULL. */
 body *body_lookup (const struct carom_world *world, carom_body_id id);
 carom_body_id body_id_of (const struct carom_world *world, int32_t slot);
+/* The same, from the body in that slot. */
+static inline carom_body_id body_slot_id (const body *b, int32_t slot)
+{
+  return ((uint64_t) b->generation << 32) | (uint64_t) (uint32_t) (slot + 1);
+}
 
 /* How far any point of the body can move in time h: (|v| + |w| R) h, plus
  * what an acceleration of magnitude `accel` (gravity) adds within h. Without
@@ -47,6 +59,24 @@ static inline double body_reach (const body *b, double h, double accel, int cont
   double cap = 0.02 * b->shape.size;
   return continuous || b->bullet || r < cap ? r : cap;
 }
+
+/* Whether two bodies' filters let them collide (carom_body_def). */
+static inline int body_filters_pass (const body *a, const body *b)
+{
+  if (a->group != 0 && a->group == b->group)
+    return a->group > 0;
+  return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
+}
+
+/* A kinematic body that moves: it wakes what it touches. */
+static inline int body_kinematic_moving (const body *b)
+{
+  return b->type == CAROM_KINEMATIC && (b->v.x != 0.0 || b->v.y != 0.0 || b->w != 0.0);
+}
+
+/* Whether the body's shape (its true outline) contains the world point p
+ * (query.c). */
+int body_contains (const body *b, vec2 p);
 
 /* Sleep and wake: a sleeping body keeps its mass but acts as static (zero
  * inverse mass) and does not move; waking restores its inverses. */

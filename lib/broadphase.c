@@ -29,6 +29,10 @@ void broadphase_destroy (carom_world *world)
 static void fill_entry (sweep_entry *e, const body *b, int axis, double slop, const step_context *ctx)
 {
   double m = slop * b->shape.size + body_reach (b, ctx->dt, ctx->accel, ctx->continuous);
+  /* a sensor's box reaches as far as the fastest body can travel in the
+   * update: what overlaps it at the end is among its pairs */
+  if (b->sensor)
+    m += ctx->sensor_reach;
   if (axis == 0)
     {
       e->lo = b->box_lo.x - m, e->hi = b->box_hi.x + m;

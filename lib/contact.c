@@ -18,6 +18,7 @@ void contacts_destroy (carom_world *world)
   mem_free (&world->allocator, c->list, (size_t) c->cap * sizeof (contact));
   mem_free (&world->allocator, c->old, (size_t) c->old_cap * sizeof (contact));
   mem_free (&world->allocator, c->table, (size_t) c->table_cap * sizeof (int32_t));
+  mem_free (&world->allocator, c->sensors, (size_t) c->sensor_cap * sizeof (int32_t));
   memset (c, 0, sizeof *c);
 }
 
@@ -222,6 +223,59 @@ static double material (double own, double fallback)
   return own >= 0.0 ? own : fallback;
 }
 
+/* contact.h */
+int contact_bodies_overlap (const body *A, const body *B)
+{
+  xform xa, xb;
+  manifold m;
+  int32_t i, j, k;
+  xa.p = A->p, xa.q = A->q;
+  xb.p = B->p, xb.q = B->q;
+  for (i = 0; i < (A->shape.kind == CAROM_SHAPE_CIRCLE ? 1 : A->shape.piece_count); ++i)
+    for (j = 0; j < (B->shape.kind == CAROM_SHAPE_CIRCLE ? 1 : B->shape.piece_count); ++j)
+      {
+        m.count = 0;
+        if (A->shape.kind == CAROM_SHAPE_CIRCLE && B->shape.kind == CAROM_SHAPE_CIRCLE)
+          collide_circles (xa.p, A->shape.radius, xb.p, B->shape.radius, 0.0, &m);
+        else if (B->shape.kind == CAROM_SHAPE_CIRCLE)
+          collide_polygon_circle (&A->shape.pieces[i], xa, xb.p, B->shape.radius, 0.0, &m);
+        else if (A->shape.kind == CAROM_SHAPE_CIRCLE)
+          collide_polygon_circle (&B->shape.pieces[j], xb, xa.p, A->shape.radius, 0.0, &m);
+        else
+          collide_polygons_sat (&A->shape.pieces[i], xa, &B->shape.pieces[j], xb, 0.0, &m);
+        for (k = 0; k < m.count; ++k)
+          if (m.points[k].depth >= 0.0)
+            return 1;
+      }
+  return 0;
+}
+
+/* A pair with a sensor: no contact, only a pair whose overlap the events
+ * test at the end of the update (sensors do not see each other, nor static
+ * sensors static bodies). */
+static void sensor_pair (carom_world *world, int32_t a, int32_t b)
+{
+  contacts *c = &world->contacts;
+  const body *A = &world->bodies[a], *B = &world->bodies[b];
+  if ((A->sensor && B->sensor) || (A->type == CAROM_STATIC && B->type == CAROM_STATIC))
+    return;
+  if (!mem_reserve (&world->allocator, (void **) &c->sensors, &c->sensor_cap, 2 * (c->sensor_count + 1),
+                    sizeof (int32_t)))
+    {
+      c->out_of_memory = 1;
+      return;
+    }
+  c->sensors[2 * c->sensor_count] = A->sensor ? a : b;
+  c->sensors[2 * c->sensor_count + 1] = A->sensor ? b : a;
+  c->sensor_count++;
+}
+
+/* A body the sub-steps can move, or one that moves on its own. */
+static int can_move (const body *b)
+{
+  return b->inv_mass > 0.0 || body_kinematic_moving (b);
+}
+
 static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
 {
   const step_context *ctx = user;
@@ -243,9 +297,16 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
     }
   A = &world->bodies[a];
   B = &world->bodies[b];
-  /* neither can move (a sleeping body against a static or sleeping one):
-   * nothing to detect or solve */
-  if (A->inv_mass == 0.0 && B->inv_mass == 0.0)
+  if (!body_filters_pass (A, B))
+    return;
+  if (A->sensor || B->sensor)
+    {
+      sensor_pair (world, a, b);
+      return;
+    }
+  /* neither can move (a sleeping body against a static or sleeping one,
+   * or a kinematic one at rest): nothing to detect or solve */
+  if (!can_move (A) && !can_move (B))
     return;
   /* combining rule: the bouncier body wins (max); friction is the
    * geometric mean */
@@ -255,6 +316,8 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
   fb = material (B->friction, world->def.friction);
   pc.restitution = ea > eb ? ea : eb;
   pc.friction = sqrt (fa * fb);
+  if (!isfinite (pc.friction))
+    pc.friction = sqrt (fa) * sqrt (fb); /* mu near the largest double: finite, so mu times 0 is 0 */
   pc.slop = world->def.slop * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   /* speculative margin: pairs that can close their gap within this step
    * are contacts now, so impacts are met before the bodies overlap */
@@ -325,6 +388,7 @@ carom_status contacts_update (carom_world *world, const step_context *ctx)
   c->old = c->list, c->old_count = c->count, c->old_cap = c->cap;
   c->list = t, c->cap = tcap, c->count = 0;
   c->point_count = 0;
+  c->sensor_count = 0;
   c->out_of_memory = 0;
   if (!build_table (world) || !broadphase_update (world, ctx, on_pair, (void *) ctx) || c->out_of_memory)
     {
@@ -346,13 +410,21 @@ static void forget_in (contact *list, int32_t *count, int32_t slot)
 void contacts_forget_body (carom_world *world, int32_t slot)
 {
   contacts *c = &world->contacts;
-  int32_t i, points = 0;
+  int32_t i, k, points = 0;
   /* what rested on it must fall: wake what it touched */
   for (i = 0; i < c->count; ++i)
     if (c->list[i].a == slot || c->list[i].b == slot)
       body_wake (&world->bodies[c->list[i].a == slot ? c->list[i].b : c->list[i].a]);
   forget_in (c->list, &c->count, slot);
   forget_in (c->old, &c->old_count, slot);
+  for (i = 0, k = 0; i < c->sensor_count; ++i)
+    if (c->sensors[2 * i] != slot && c->sensors[2 * i + 1] != slot)
+      {
+        c->sensors[2 * k] = c->sensors[2 * i];
+        c->sensors[2 * k + 1] = c->sensors[2 * i + 1];
+        ++k;
+      }
+  c->sensor_count = k;
   for (i = 0; i < c->count; ++i)
     {
       c->list[i].first_point = points;

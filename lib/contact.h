@@ -66,6 +66,10 @@ typedef struct contacts {
   int32_t table_cap;
   int32_t point_count;
   int32_t fine_count;    /* contacts marked fine this step */
+  int32_t *sensors;      /* this detection's pairs with a sensor: pairs of
+                            slots, the sensor first (events.c tests their
+                            overlap at the end of the update) */
+  int32_t sensor_count, sensor_cap; /* pairs, and room in int32_t */
   int out_of_memory;
 } contacts;
 
@@ -78,6 +82,10 @@ void contacts_destroy (struct carom_world *world);
 carom_status contacts_update (struct carom_world *world, const struct step_context *ctx);
 /* Undo the last contacts_update (a later stage of the sub-step failed). */
 void contacts_undo (struct carom_world *world);
+/* Whether some convex piece of a overlaps some piece of b (or the circles)
+ * where they are now: the sensors' test (events.c). */
+struct body;
+int contact_bodies_overlap (const struct body *a, const struct body *b);
 /* Forget every contact that involves `slot` (the body is being removed). */
 void contacts_forget_body (struct carom_world *world, int32_t slot);
 

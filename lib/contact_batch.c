@@ -95,6 +95,7 @@ static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t ind
           q->normal_impulse[lane] = q->tangent_impulse[lane] = 0.0;
         }
       q->push_impulse[lane] = 0.0;
+      q->total[lane] = 0.0;
     }
 }
 
@@ -127,7 +128,7 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
       for (i = 0; i < c->count; ++i)
         {
           contact *ct = &c->list[i];
-          int ma = sb[ct->a].moves, mb = sb[ct->b].moves;
+          int ma = sb[ct->a].moves == MOVES_DYNAMIC, mb = sb[ct->b].moves == MOVES_DYNAMIC;
           if ((ma && mb) == (pass == 1) || !batchable (ct))
             continue;
           colour[i] = constraint_colour (ma ? &used[ct->a] : NULL, mb ? &used[ct->b] : NULL);
@@ -186,6 +187,7 @@ void contact_batch_store (carom_world *world)
             {
               k->points[j].normal_impulse = b->p[j].normal_impulse[lane];
               k->points[j].tangent_impulse = b->p[j].tangent_impulse[lane];
+              k->points[j].total_impulse = b->p[j].total[lane];
             }
         }
     }

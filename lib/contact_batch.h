@@ -45,6 +45,7 @@ typedef struct batch_point {
   double rn_a[BATCH_LANES], rn_b[BATCH_LANES], rt_a[BATCH_LANES], rt_b[BATCH_LANES];
   double normal_mass[BATCH_LANES], tangent_mass[BATCH_LANES];
   double normal_impulse[BATCH_LANES], tangent_impulse[BATCH_LANES], push_impulse[BATCH_LANES];
+  double total[BATCH_LANES]; /* the step's normal impulse (contact_point.total_impulse) */
 } batch_point;
 
 typedef struct contact_batch {

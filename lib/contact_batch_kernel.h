@@ -223,9 +223,10 @@ KERNEL_ATTR void KERNEL (contact_batch_warm_start) (contact_batch *c, int32_t n,
       KERNEL (gather) (sb, c->b, &b, 0);
       for (j = 0; j < 2; ++j)
         {
-          const batch_point *p = &c->p[j];
+          batch_point *p = &c->p[j];
           wide nx = W_LOAD (p->nx), ny = W_LOAD (p->ny);
           KERNEL (push) (&a, &b, &m, nx, ny, W_LOAD (p->rn_a), W_LOAD (p->rn_b), W_LOAD (p->normal_impulse));
+          W_STORE (p->total, W_ADD (W_LOAD (p->total), W_LOAD (p->normal_impulse)));
           KERNEL (push) (&a, &b, &m, W_NEG (ny), nx, W_LOAD (p->rt_a), W_LOAD (p->rt_b), W_LOAD (p->tangent_impulse));
         }
       KERNEL (scatter) (sb, c->a, &a, 0);
@@ -242,7 +243,7 @@ KERNEL_ATTR void KERNEL (contact_batch_solve) (contact_batch *c, int32_t n, solv
     {
       KERNEL (lanes) a, b;
       KERNEL (mass) m = KERNEL (masses) (c);
-      wide bias[2], x[2], friction = W_LOAD (c->friction);
+      wide bias[2], x[2], before[2], friction = W_LOAD (c->friction);
       KERNEL (gather) (sb, c->a, &a, 0);
       KERNEL (gather) (sb, c->b, &b, 0);
       for (j = 0; j < 2; ++j)
@@ -250,7 +251,7 @@ KERNEL_ATTR void KERNEL (contact_batch_solve) (contact_batch *c, int32_t n, solv
           /* a speculative point may close its gap within the sub-step */
           wide s = KERNEL (separation) (&a, &b, &c->p[j]);
           bias[j] = W_SEL (M_GT (s, zero), W_MUL (s, ih), zero);
-          x[j] = W_LOAD (c->p[j].normal_impulse);
+          x[j] = before[j] = W_LOAD (c->p[j].normal_impulse);
         }
       KERNEL (normal) (c, &a, &b, &m, bias, x, M_GE (zero, zero));
       for (j = 0; j < 2; ++j)
@@ -263,6 +264,7 @@ KERNEL_ATTR void KERNEL (contact_batch_solve) (contact_batch *c, int32_t n, solv
           KERNEL (push) (&a, &b, &m, tx, ty, rta, rtb, W_SUB (acc, old));
           W_STORE (p->tangent_impulse, acc);
           W_STORE (p->normal_impulse, x[j]);
+          W_STORE (p->total, W_ADD (W_LOAD (p->total), W_SUB (x[j], before[j])));
         }
       KERNEL (scatter) (sb, c->a, &a, 0);
       KERNEL (scatter) (sb, c->b, &b, 0);

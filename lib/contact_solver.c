@@ -181,17 +181,15 @@ void contact_prepare (carom_world *world, const step_context *ctx)
 /* A normal impulse applied at a point, `remaining` before the end of the
  * step: with every other, it adds up to what the contact gave over the whole
  * step, and to how far that moved the bodies by the end of it (the moment,
- * see contact_time_of_impact). Only bouncy contacts (track) need either:
- * restitution and the time of impact leave the others alone. */
+ * see contact_time_of_impact). Only bouncy contacts (track) need the moment:
+ * the time of impact leaves the others alone. */
 static inline void apply_normal (solver_body *a, solver_body *b, contact_point *p, double lambda, double remaining,
                                  int track)
 {
   contact_push (a, b, p->normal, p->rn_a, p->rn_b, lambda);
+  p->total_impulse += lambda; /* the step's, for the events too */
   if (track)
-    {
-      p->total_impulse += lambda;
-      p->normal_moment += lambda * remaining;
-    }
+    p->normal_moment += lambda * remaining;
 }
 
 /* The same along the tangent (friction). */
@@ -300,7 +298,8 @@ static int solve_block (solver_body *a, solver_body *b, contact *k, const double
 static void note_meeting (contact *k, const solver_body *a, const solver_body *b, const step_context *ctx,
                           int32_t kicks)
 {
-  vec2 ka = a->moves ? ctx->kick : v2 (0.0, 0.0), kb = b->moves ? ctx->kick : v2 (0.0, 0.0);
+  vec2 ka = a->moves == MOVES_DYNAMIC ? ctx->kick : v2 (0.0, 0.0);
+  vec2 kb = b->moves == MOVES_DYNAMIC ? ctx->kick : v2 (0.0, 0.0);
   vec2 fell = v2_scale (v2_sub (kb, ka), (double) kicks);
   int32_t j;
   for (j = 0; j < k->count; ++j)

@@ -11,7 +11,7 @@ void damping_update (carom_world *world, const step_context *ctx)
     return;
   /* exp(-c h) per sub-step compounds to exactly exp(-c t) at every step */
   for (i = 0; i < world->slot_count; ++i)
-    if (sb[i].moves)
+    if (sb[i].moves == MOVES_DYNAMIC)
       {
         sb[i].v = v2_scale (sb[i].v, ctx->damp_v);
         sb[i].w *= ctx->damp_w;

@@ -46,6 +46,8 @@ static carom_body_def body_defaults (void)
   d.density = 1.0;
   d.restitution = -1.0;
   d.friction = -1.0;
+  d.category = 1u;
+  d.mask = 0xffffffffu;
   return d;
 }
 

@@ -22,7 +22,7 @@ void gravity_kick (carom_world *world, const step_context *ctx)
   int32_t i;
   if (world->central.active)
     for (i = 0; i < world->slot_count; ++i)
-      if (sb[i].moves)
+      if (sb[i].moves == MOVES_DYNAMIC)
         {
           const body *b = &world->bodies[i];
           sb[i].v = v2_add (sb[i].v, central_dv (world, b, v2_add (b->p, sb[i].dp), ctx->h));
@@ -30,6 +30,6 @@ void gravity_kick (carom_world *world, const step_context *ctx)
   if (ctx->gravity.x == 0.0 && ctx->gravity.y == 0.0)
     return;
   for (i = 0; i < world->slot_count; ++i)
-    if (sb[i].moves)
+    if (sb[i].moves == MOVES_DYNAMIC)
       sb[i].v = v2_add (sb[i].v, ctx->kick);
 }

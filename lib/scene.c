@@ -30,11 +30,17 @@ enum {
   OPT_FRICTION = 1u << 6,
   OPT_STATIC = 1u << 7,
   OPT_FIXED = 1u << 8,
-  OPT_BULLET = 1u << 9
+  OPT_BULLET = 1u << 9,
+  OPT_KINEMATIC = 1u << 10,
+  OPT_SENSOR = 1u << 11,
+  OPT_CATEGORY = 1u << 12,
+  OPT_MASK = 1u << 13,
+  OPT_GROUP = 1u << 14
 };
 #define OPT_MATERIAL (OPT_RESTITUTION | OPT_FRICTION)
 #define OPT_BODY                                                                                                       \
-  (OPT_AT | OPT_ANGLE | OPT_VELOCITY | OPT_SPIN | OPT_DENSITY | OPT_MATERIAL | OPT_STATIC | OPT_FIXED | OPT_BULLET)
+  (OPT_AT | OPT_ANGLE | OPT_VELOCITY | OPT_SPIN | OPT_DENSITY | OPT_MATERIAL | OPT_STATIC | OPT_FIXED | OPT_BULLET     \
+   | OPT_KINEMATIC | OPT_SENSOR | OPT_CATEGORY | OPT_MASK | OPT_GROUP)
 
 typedef struct scene_option {
   const char *word;
@@ -53,6 +59,11 @@ static const scene_option scene_options[] = {
   { "static", 0, OPT_STATIC },
   { "fixed", 0, OPT_FIXED },
   { "bullet", 0, OPT_BULLET },
+  { "kinematic", 0, OPT_KINEMATIC },
+  { "sensor", 0, OPT_SENSOR },
+  { "category", 1, OPT_CATEGORY },
+  { "mask", 1, OPT_MASK },
+  { "group", 1, OPT_GROUP },
 };
 
 typedef struct scene_parser {
@@ -561,6 +572,24 @@ static carom_status scene_apply_option (scene_parser *p, const scene_option *opt
       b->friction = v[0];
       break;
     case OPT_STATIC: b->type = CAROM_STATIC; break;
+    case OPT_KINEMATIC: b->type = CAROM_KINEMATIC; break;
+    case OPT_SENSOR: b->sensor = 1; break;
+    case OPT_CATEGORY:
+    case OPT_MASK:
+      {
+        /* bit sets: whole numbers from 0 to 2^32 - 1 (0xffffffff) */
+        if (v[0] != floor (v[0]) || v[0] < 0.0 || v[0] > 4294967295.0)
+          return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "%s: %s must be a whole number from 0 to 4294967295, got %g",
+                             p->tok[0], opt->word, v[0]);
+        if (opt->bit == OPT_CATEGORY)
+          b->category = (uint32_t) v[0];
+        else
+          b->mask = (uint32_t) v[0];
+        break;
+      }
+    case OPT_GROUP:
+      s = scene_count (p, v[0], "group", -2147483648.0, 2147483647.0, CAROM_ERR_BAD_ARGUMENT, &b->group);
+      break;
     case OPT_FIXED: break; /* applied once the body exists */
     case OPT_BULLET: break;
     }
@@ -624,8 +653,13 @@ static carom_status scene_arguments (scene_parser *p, const scene_statement *st)
       if (s != CAROM_OK)
         return s;
     }
+  if ((p->opts & OPT_STATIC) && (p->opts & OPT_KINEMATIC))
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: a body is 'static' or 'kinematic', not both", st->word);
   if (p->body.type == CAROM_STATIC && (p->opts & (OPT_VELOCITY | OPT_SPIN | OPT_FIXED)))
     return scene_fail (p, CAROM_ERR_STATIC_BODY, "%s: a static body cannot have a velocity, spin or 'fixed'",
+                       st->word);
+  if (p->body.type == CAROM_KINEMATIC && (p->opts & OPT_FIXED))
+    return scene_fail (p, CAROM_ERR_STATIC_BODY, "%s: a kinematic body cannot be 'fixed' (it turns as it is told)",
                        st->word);
   if ((p->opts & OPT_FIXED) && p->body.spin != 0.0)
     return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "%s: a 'fixed' (non-rotating) body cannot spin", st->word);

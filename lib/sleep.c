@@ -24,9 +24,9 @@ void sleep_wake_touched (carom_world *world)
   for (i = 0; i < c->count; ++i)
     {
       body *a = &world->bodies[c->list[i].a], *b = &world->bodies[c->list[i].b];
-      if (a->asleep && !b->asleep && b->type == CAROM_DYNAMIC && !is_slow (b))
+      if (a->asleep && !b->asleep && ((b->type == CAROM_DYNAMIC && !is_slow (b)) || body_kinematic_moving (b)))
         body_wake (a);
-      else if (b->asleep && !a->asleep && a->type == CAROM_DYNAMIC && !is_slow (a))
+      else if (b->asleep && !a->asleep && ((a->type == CAROM_DYNAMIC && !is_slow (a)) || body_kinematic_moving (a)))
         body_wake (b);
     }
 }
@@ -40,7 +40,7 @@ void sleep_update (carom_world *world, const step_context *ctx)
   for (i = 0; i < world->slot_count; ++i)
     {
       body *b = &world->bodies[i];
-      if (!b->alive || b->type == CAROM_STATIC || b->asleep)
+      if (!b->alive || b->type != CAROM_DYNAMIC || b->asleep)
         continue;
       if (!is_slow (b))
         {

@@ -20,6 +20,7 @@
 #include "contact_batch.h"
 #include "contact_solver.h"
 #include "damping.h"
+#include "force.h"
 #include "gravity.h"
 #include "world.h"
 
@@ -44,7 +45,10 @@ static void gather (carom_world *world)
   for (i = 0; i < world->slot_count; ++i)
     {
       const body *b = &world->bodies[i];
-      int moves = b->alive && b->type == CAROM_DYNAMIC && !b->asleep;
+      int moves = !b->alive ? MOVES_NOT
+                  : b->type == CAROM_DYNAMIC && !b->asleep ? MOVES_DYNAMIC
+                  : b->type == CAROM_KINEMATIC ? MOVES_KINEMATIC
+                                               : MOVES_NOT;
       sb[i].v = b->v;
       sb[i].w = b->w;
       sb[i].dp = v2 (0.0, 0.0);
@@ -52,9 +56,10 @@ static void gather (carom_world *world)
       sb[i].pw = 0.0;
       sb[i].dq.c = 1.0, sb[i].dq.s = 0.0;
       sb[i].da = 0.0;
-      sb[i].im = moves ? b->inv_mass : 0.0;
-      sb[i].ii = moves ? b->inv_inertia : 0.0;
-      sb[i].constrained = 0;
+      sb[i].im = moves == MOVES_DYNAMIC ? b->inv_mass : 0.0;
+      sb[i].ii = moves == MOVES_DYNAMIC ? b->inv_inertia : 0.0;
+      /* a kinematic body moves with the velocity it was given, exactly */
+      sb[i].constrained = moves == MOVES_KINEMATIC;
       sb[i].moves = moves;
     }
   /* the inert body of the batches' unused lanes (contact_batch.h) */
@@ -158,6 +163,7 @@ void solver_step (carom_world *world, const step_context *ctx)
   for (k = 0; k < ctx->substeps; ++k)
     {
       gravity_kick (world, ctx);
+      force_kick (world, ctx);
       damping_update (world, ctx);
       if (contacts)
         {
@@ -180,6 +186,7 @@ void solver_step (carom_world *world, const step_context *ctx)
             }
         }
       integrate_positions (world, ctx);
+      force_drift_undo (world, ctx);
       if (contacts)
         {
           for (it = 0; it < ctx->iterations; ++it)

@@ -12,6 +12,13 @@ struct carom_world;
 /* What the sub-steps read and write per body, kept compact: velocities,
  * the motion since the step began (so constraints measure their current
  * error without recomputing any geometry), and inverse mass and inertia. */
+/* solver_body.moves */
+enum {
+  MOVES_NOT = 0,       /* static, asleep or dead */
+  MOVES_DYNAMIC = 1,   /* awake and dynamic: gravity, forces, contacts */
+  MOVES_KINEMATIC = 2  /* at its own velocity, infinite mass */
+};
+
 typedef struct solver_body {
   vec2 v;
   double w;
@@ -23,7 +30,7 @@ typedef struct solver_body {
   double da;     /* the same rotation as an angle (for the body) */
   double im, ii; /* inverse mass and inertia (0: cannot be moved) */
   int32_t constrained; /* some constraint acts on it this step */
-  int32_t moves;       /* dynamic and awake: the sub-steps move it */
+  int32_t moves;       /* MOVES_*: whether and how the sub-steps move it */
 } solver_body;
 
 /* Room for one solver body per slot; 0 when memory ran out. Called before

@@ -29,4 +29,18 @@ void step_context_init (step_context *ctx, const carom_world *world, double dt)
   ctx->restitution_threshold = RESTITUTION_THRESHOLD_STEPS * ctx->accel * dt;
   ctx->push_rate = world->def.position_correction * ctx->inv_h;
   ctx->converged = ctx->accel > 0.0 ? SOLVE_CONVERGED * ctx->accel * ctx->h : INFINITY;
+  ctx->sensor_reach = 0.0;
+  if (world->sensor_count > 0)
+    {
+      int32_t i;
+      for (i = 0; i < world->slot_count; ++i)
+        {
+          const body *b = &world->bodies[i];
+          double r;
+          if (!b->alive || b->sensor || b->type == CAROM_STATIC)
+            continue;
+          r = body_reach (b, dt, ctx->accel, 1);
+          ctx->sensor_reach = r > ctx->sensor_reach ? r : ctx->sensor_reach;
+        }
+    }
 }

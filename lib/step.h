@@ -27,6 +27,8 @@ typedef struct step_context {
   double push_rate;      /* overlap pushed out per unit time: position_correction / h */
   double converged;      /* a solve pass that changes no normal speed by more
                             than this ends the sub-step's passes (solver.c) */
+  double sensor_reach;   /* how far the fastest body can travel in dt, when
+                            the world has a sensor (broadphase.c); else 0 */
 } step_context;
 
 struct carom_world;

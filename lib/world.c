@@ -6,6 +6,7 @@
 
 #include "contact_batch.h"
 #include "def.h"
+#include "force.h"
 #include "sleep.h"
 #include "solver.h"
 #include "step.h"
@@ -63,6 +64,7 @@ void carom_world_destroy (carom_world *world)
   if (!world)
     return;
   solver_destroy (world);
+  events_destroy (world);
   contacts_destroy (world);
   broadphase_destroy (world);
   bodies_destroy (world);
@@ -104,17 +106,22 @@ carom_status carom_world_update (carom_world *world, double dt)
    * keep the solver's numbers within doubles */
   if (!is_finite (dt) || !(dt >= 1e-100) || dt > MAX_MAGNITUDE)
     return CAROM_ERR_BAD_TIME_STEP;
+  st = force_check (world, dt);
+  if (st != CAROM_OK)
+    return st;
   step_context_init (&ctx, world, dt);
   st = contacts_update (world, &ctx);
   if (st != CAROM_OK)
     return st;
-  if (!solver_reserve (world))
+  if (!solver_reserve (world) || !events_reserve (world))
     {
       contacts_undo (world); /* nothing has changed */
       return CAROM_ERR_OUT_OF_MEMORY;
     }
   sleep_wake_touched (world);
   solver_step (world, &ctx);
+  events_update (world);
+  force_clear (world);
   sleep_update (world, &ctx);
   check_finite (world);
   return CAROM_OK;

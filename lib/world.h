@@ -6,6 +6,7 @@
 #include "carom.h"
 #include "contact.h"
 #include "broadphase.h"
+#include "events.h"
 
 struct carom_world {
   carom_allocator allocator;
@@ -46,6 +47,9 @@ struct carom_world {
   double damping_linear, damping_angular;
   int sleeping;
   int continuous;      /* speculative contacts as far as bodies can travel (off by default) */
+  int forces_active;   /* some body has a force or torque for the next update (force.c) */
+  int32_t sensor_count; /* live sensor bodies */
+  events events;       /* the last update's touching pairs and events (events.c) */
 };
 
 /* Run the solver's kernels on `path` (a solver_path, contact_batch.h) from

@@ -131,6 +131,26 @@ uint64_t world_state_hash (const carom_world *world)
       h = mix (h, &b->bullet, sizeof b->bullet);
       h = mix (h, &b->asleep, sizeof b->asleep);
       h = mix (h, &b->sleep_time, sizeof b->sleep_time);
+      h = mix (h, &b->force, sizeof b->force);
+      h = mix (h, &b->torque, sizeof b->torque);
+      h = mix (h, &b->user_data, sizeof b->user_data);
+      h = mix (h, &b->category, sizeof b->category);
+      h = mix (h, &b->mask, sizeof b->mask);
+      h = mix (h, &b->group, sizeof b->group);
+      h = mix (h, &b->sensor, sizeof b->sensor);
+    }
+  h = mix (h, &world->forces_active, sizeof world->forces_active);
+  /* the last update's events and the pairs the next one compares with */
+  h = mix (h, &world->events.event_count, sizeof world->events.event_count);
+  for (i = 0; i < world->events.event_count; ++i)
+    h = mix (h, &world->events.list[i], sizeof world->events.list[i]);
+  h = mix (h, &world->events.count[world->events.cur], sizeof (int32_t));
+  for (i = 0; i < world->events.count[world->events.cur]; ++i)
+    {
+      const touch *t = &world->events.touches[world->events.cur][i];
+      h = mix (h, &t->a, sizeof t->a);
+      h = mix (h, &t->b, sizeof t->b);
+      h = mix (h, &t->sensor, sizeof t->sensor);
     }
   /* every contact, with what it carries to the next step */
   for (i = 0; i < world->contacts.count; ++i)

@@ -51,7 +51,8 @@ carom_body_id add_box (carom_world *w, carom_body_type type, double x, double y,
 /* Total kinetic energy (translational and rotational) of all bodies. */
 double world_kinetic_energy (const carom_world *world);
 /* FNV-1a hash of the whole state a step depends on: settings and effects,
- * every live body (id, pose, velocities, inverse masses, materials, sleep),
+ * every live body (id, pose, velocities, inverse masses, materials, sleep,
+ * pending forces, user data, filter, sensor), the last update's events,
  * every contact with the impulses it carries to the next step and its
  * manifold's reuse data. Equal only for bit-identical states. */
 uint64_t world_state_hash (const carom_world *world);

@@ -149,7 +149,7 @@ variant "a new function (allowed)" pass "carom_abi_test_added" '-O2 -g' \
   lib/status.c '$a\
 int32_t carom_abi_test_added (void) { return 1; }'
 variant "a field appended to carom_body_def (allowed)" pass "abi-check: OK" '-O2 -g' \
-  include/carom.h 's/^\( *\)double friction; *\/\*\*< mu .*/&\n\1double appended;/'
+  include/carom.h 's/^} carom_body_def;/  double appended;\n&/'
 
 echo "abi: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -123,9 +123,10 @@ typedef struct contact_state {
 } contact_state;
 
 typedef struct world_state {
-  int32_t body_count, contact_count;
+  int32_t body_count, contact_count, event_count;
   body_state bodies[MAX_IDS];
   contact_state contacts[256];
+  carom_contact_event events[64];
 } world_state;
 
 static void snapshot (const carom_world *w, world_state *s)
@@ -146,6 +147,8 @@ static void snapshot (const carom_world *w, world_state *s)
       assert_status (carom_body_get_spin (w, ids[i], &b->spin), CAROM_OK);
       assert_status (carom_body_get_mass (w, ids[i], &b->mass, &b->inertia, &b->area), CAROM_OK);
     }
+  s->event_count = carom_world_get_events (w, s->events, 64);
+  assert_true (s->event_count >= 0 && s->event_count <= 64);
   s->contact_count = carom_world_contact_count (w);
   for (i = 0; i < s->contact_count && i < 256; ++i)
     {
@@ -172,6 +175,12 @@ static int same_state (const world_state *a, const world_state *b, char *why, si
                   b->bodies[i].vy);
         return 0;
       }
+  if (a->event_count != b->event_count || memcmp (a->events, b->events, sizeof a->events) != 0)
+    {
+      snprintf (why, why_size, "the events changed (%d, then %d of them)", (int) a->event_count,
+                (int) b->event_count);
+      return 0;
+    }
   if (a->contact_count != b->contact_count)
     {
       snprintf (why, why_size, "the contact count went from %d to %d", (int) a->contact_count,
@@ -211,9 +220,13 @@ typedef enum step_kind {
   ADD_REGULAR,
   ADD_U,
   ADD_LATE_BOX,
+  ADD_SENSOR,
+  ADD_KINEMATIC,
   DETECT,
   UPDATE,
-  REMOVE
+  REMOVE,
+  PUSH,
+  QUERY
 } step_kind;
 
 
@@ -223,7 +236,7 @@ typedef struct scenario {
   long k;
   int oom_calls;          /* calls that returned OUT_OF_MEMORY */
   int32_t max_contacts;   /* most contact points seen after a step */
-  carom_body_id circle;
+  carom_body_id circle, box;
   /* the same calls on a world whose allocations never fail (FAIL_ONCE) */
   carom_world *ref;
   world_state *ref_state; /* after its last call */
@@ -273,6 +286,12 @@ static carom_status add_body (carom_world *w, step_kind kind, carom_body_id *id)
     case ADD_LATE_BOX:
       d.x = -3.0, d.y = 2.0;
       return carom_world_add_box (w, &d, 0.7, 0.3, id);
+    case ADD_SENSOR: /* where the U lands: it reports, pushes nothing */
+      d.type = CAROM_STATIC, d.sensor = 1, d.x = 0.0, d.y = 1.5;
+      return carom_world_add_box (w, &d, 4.0, 1.0, id);
+    case ADD_KINEMATIC: /* sweeps into the regular polygon */
+      d.type = CAROM_KINEMATIC, d.x = 6.0, d.y = 0.6, d.vx = -1.0;
+      return carom_world_add_box (w, &d, 0.5, 1.0, id);
     default:
       break;
     }
@@ -292,6 +311,27 @@ static carom_status do_step (scenario *sc, carom_world *w, step_kind kind)
       return carom_world_update (w, 1.0 / 60.0);
     case REMOVE:
       return carom_world_remove_body (w, sc->circle);
+    case PUSH: /* forces and impulses allocate nothing; they act on the next update */
+      s = carom_body_apply_force (w, sc->box, 5.0, 0.0, 0.1, 0.6);
+      if (s == CAROM_OK)
+        s = carom_body_apply_impulse (w, sc->box, 0.0, 0.1, 0.0, 0.5);
+      return s;
+    case QUERY: /* queries, events and the debug draw allocate nothing */
+      {
+        carom_ray_hit hit;
+        carom_body_id ids[8];
+        carom_debug_draw draw;
+        long calls = sc->alloc->calls;
+        assert_status (carom_world_cast_ray (w, -10.0, 0.5, 10.0, 0.5, ~0u, &hit), CAROM_OK);
+        assert_true (carom_world_query_aabb (w, -5.0, -1.0, 5.0, 3.0, ~0u, ids, 8) >= 0);
+        assert_true (carom_world_query_point (w, 0.0, 0.5, ~0u, ids, 8) >= 0);
+        assert_true (carom_world_get_events (w, NULL, 0) >= 0);
+        assert_status (carom_debug_draw_init (&draw, sizeof draw), CAROM_OK);
+        assert_status (carom_world_draw (w, &draw), CAROM_OK);
+        if (w != sc->ref)
+          assert_true (sc->alloc->calls == calls);
+        return CAROM_OK;
+      }
     default:
       s = add_body (w, kind, &id);
       if (s == CAROM_OK)
@@ -299,6 +339,8 @@ static carom_status do_step (scenario *sc, carom_world *w, step_kind kind)
           assert_status (carom_body_check (w, id), CAROM_OK);
           if (kind == ADD_CIRCLE)
             sc->circle = id;
+          if (kind == ADD_BOX)
+            sc->box = id;
         }
       else
         assert_true (id == 777); /* *id untouched on failure */
@@ -317,7 +359,8 @@ static void reference_step (scenario *sc, step_kind kind)
 static const char *step_name (step_kind kind)
 {
   static const char *names[] = { "add ground", "add circle", "add box", "add regular", "add U",
-                                 "add late box", "detect", "update", "remove" };
+                                 "add late box", "add sensor", "add kinematic", "detect", "update", "remove",
+                                 "push", "query" };
   return names[kind];
 }
 
@@ -372,7 +415,7 @@ static int checked_call (scenario *sc, step_kind kind)
 static int run_scenario (checking_alloc *c, long k, int mode, carom_narrow_phase narrow, int32_t substeps,
                          int32_t *max_contacts)
 {
-  static const step_kind adds[] = { ADD_GROUND, ADD_CIRCLE, ADD_BOX, ADD_REGULAR, ADD_U };
+  static const step_kind adds[] = { ADD_GROUND, ADD_CIRCLE, ADD_BOX, ADD_REGULAR, ADD_U, ADD_SENSOR, ADD_KINEMATIC };
   scenario sc;
   carom_world_def def;
   carom_status s;
@@ -422,6 +465,8 @@ static int run_scenario (checking_alloc *c, long k, int mode, carom_narrow_phase
       if (carom_world_contact_count (sc.w) > sc.max_contacts)
         sc.max_contacts = carom_world_contact_count (sc.w);
       assert_world_finite (sc.w);
+      if (step % 5 == 2 && (!checked_call (&sc, PUSH) || !checked_call (&sc, QUERY)))
+        goto out;
       if (step == 15)
         {
           if (!checked_call (&sc, REMOVE))

@@ -706,7 +706,7 @@ static void test_bad_enum_values (void **state)
   carom_world *w = *state;
   carom_body_def d;
   assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
-  d.type = (carom_body_type) 2;
+  d.type = (carom_body_type) 3;
   assert_status (carom_world_add_circle (w, &d, 1.0, NULL), CAROM_ERR_BAD_ARGUMENT);
   d.type = (carom_body_type) -1;
   assert_status (carom_world_add_box (w, &d, 1.0, 1.0, NULL), CAROM_ERR_BAD_ARGUMENT);
@@ -1153,6 +1153,180 @@ static void test_scene_error_struct_and_empty_text (void **state)
   carom_world_destroy (w);
 }
 
+
+/* ------------------------------------------------ the calls of version 0.2 */
+
+/* Every refusal of a version 0.2 call, in one table: the call, its inputs,
+ * the status it must return; each must leave the world's whole state
+ * (world_state_hash: bodies, pending forces, filters, user data, contacts,
+ * events) as it was. */
+typedef enum api_call {
+  FORCE, TORQUE, IMPULSE, ANGULAR, FILTER, USER_SET, USER_GET, SENSOR_GET, FILTER_GET, RAY, CLEAR
+} api_call;
+
+typedef struct api_case {
+  const char *what;
+  api_call call;
+  int body;          /* 0 dynamic, 1 static, 2 kinematic, 3 stale, 4 NULL world */
+  double a, b, c, d;
+  carom_status want;
+} api_case;
+
+static const api_case api_cases[] = {
+  { "force NaN", FORCE, 0, NAN, 0, 0, 0, CAROM_ERR_NOT_FINITE },
+  { "force at an infinite point", FORCE, 0, 1, 0, 0, INFINITY, CAROM_ERR_NOT_FINITE },
+  { "force beyond the magnitude", FORCE, 0, 2e100, 0, 0, 0, CAROM_ERR_BAD_ARGUMENT },
+  { "force at a point beyond it", FORCE, 0, 1, 0, -2e100, 0, CAROM_ERR_BAD_ARGUMENT },
+  { "force on a static body", FORCE, 1, 1, 0, 0, 0, CAROM_ERR_STATIC_BODY },
+  { "force on a kinematic body", FORCE, 2, 1, 0, 0, 0, CAROM_ERR_STATIC_BODY },
+  { "force on a stale id", FORCE, 3, 1, 0, 0, 0, CAROM_ERR_STALE_BODY },
+  { "force in no world", FORCE, 4, 1, 0, 0, 0, CAROM_ERR_NULL_ARGUMENT },
+  { "torque NaN", TORQUE, 0, NAN, 0, 0, 0, CAROM_ERR_NOT_FINITE },
+  { "torque beyond the magnitude", TORQUE, 0, -1e101, 0, 0, 0, CAROM_ERR_BAD_ARGUMENT },
+  { "torque on a static body", TORQUE, 1, 1, 0, 0, 0, CAROM_ERR_STATIC_BODY },
+  { "torque on a stale id", TORQUE, 3, 1, 0, 0, 0, CAROM_ERR_STALE_BODY },
+  { "impulse -inf", IMPULSE, 0, 0, -INFINITY, 0, 0, CAROM_ERR_NOT_FINITE },
+  { "impulse beyond the magnitude", IMPULSE, 0, 0, 1e101, 0, 0, CAROM_ERR_BAD_ARGUMENT },
+  { "impulse giving a speed beyond it", IMPULSE, 0, 0, 9e99, 0, 0, CAROM_ERR_BAD_ARGUMENT },
+  { "impulse on a kinematic body", IMPULSE, 2, 1, 0, 0, 0, CAROM_ERR_STATIC_BODY },
+  { "impulse on a stale id", IMPULSE, 3, 1, 0, 0, 0, CAROM_ERR_STALE_BODY },
+  { "angular impulse NaN", ANGULAR, 0, NAN, 0, 0, 0, CAROM_ERR_NOT_FINITE },
+  { "angular impulse giving a spin beyond it", ANGULAR, 0, 9e99, 0, 0, 0, CAROM_ERR_BAD_ARGUMENT },
+  { "angular impulse on a static body", ANGULAR, 1, 1, 0, 0, 0, CAROM_ERR_STATIC_BODY },
+  { "filter on a stale id", FILTER, 3, 0, 0, 0, 0, CAROM_ERR_STALE_BODY },
+  { "filter in no world", FILTER, 4, 0, 0, 0, 0, CAROM_ERR_NULL_ARGUMENT },
+  { "user data on a stale id", USER_SET, 3, 0, 0, 0, 0, CAROM_ERR_STALE_BODY },
+  { "user data in no world", USER_GET, 4, 0, 0, 0, 0, CAROM_ERR_NULL_ARGUMENT },
+  { "user data of a stale id", USER_GET, 3, 0, 0, 0, 0, CAROM_ERR_STALE_BODY },
+  { "sensor flag of a stale id", SENSOR_GET, 3, 0, 0, 0, 0, CAROM_ERR_STALE_BODY },
+  { "filter of a stale id", FILTER_GET, 3, 0, 0, 0, 0, CAROM_ERR_STALE_BODY },
+  { "ray from NaN", RAY, 0, NAN, 0, 1, 1, CAROM_ERR_NOT_FINITE },
+  { "ray to inf", RAY, 0, 0, 0, 1, INFINITY, CAROM_ERR_NOT_FINITE },
+  { "ray beyond the magnitude", RAY, 0, 0, 0, 2e100, 0, CAROM_ERR_BAD_ARGUMENT },
+  { "ray in no world", RAY, 4, 0, 0, 1, 1, CAROM_ERR_NULL_ARGUMENT },
+  { "forces cleared in no world", CLEAR, 4, 0, 0, 0, 0, CAROM_ERR_NULL_ARGUMENT },
+};
+
+static carom_status call_api (carom_world *w, const api_case *t, carom_body_id id)
+{
+  void *p = &p;
+  uint32_t cat = 7, mask = 7;
+  int32_t group = 7, sensor = 7;
+  carom_ray_hit hit;
+  carom_status s;
+  hit.body = 12345;
+  switch (t->call)
+    {
+    case FORCE: return carom_body_apply_force (w, id, t->a, t->b, t->c, t->d);
+    case TORQUE: return carom_body_apply_torque (w, id, t->a);
+    case IMPULSE: return carom_body_apply_impulse (w, id, t->a, t->b, t->c, t->d);
+    case ANGULAR: return carom_body_apply_angular_impulse (w, id, t->a);
+    case FILTER: return carom_body_set_filter (w, id, 2u, 3u, -1);
+    case USER_SET: return carom_body_set_user_data (w, id, NULL);
+    case USER_GET:
+      s = carom_body_get_user_data (w, id, &p);
+      assert_true (p == &p); /* outputs untouched */
+      return s;
+    case SENSOR_GET:
+      s = carom_body_is_sensor (w, id, &sensor);
+      assert_int_equal (sensor, 7);
+      return s;
+    case FILTER_GET:
+      s = carom_body_get_filter (w, id, &cat, &mask, &group);
+      assert_true (cat == 7 && mask == 7 && group == 7);
+      return s;
+    case RAY:
+      s = carom_world_cast_ray (w, t->a, t->b, t->c, t->d, ~0u, &hit);
+      assert_true (hit.body == 12345);
+      return s;
+    default: return carom_world_clear_forces (w);
+    }
+}
+
+static void test_version_0_2_calls_refuse_bad_input (void **state)
+{
+  carom_world *w = new_world (-10.0);
+  carom_body_def d;
+  carom_body_id ids[4];
+  carom_ray_hit hit;
+  carom_contact_event events[4];
+  carom_debug_draw draw;
+  size_t i;
+  int k;
+  (void) state;
+  add_ground (w, -0.5, 20.0, 1.0);
+  carom_body_def_init (&d, sizeof d);
+  d.y = 0.5, d.density = 0.01; /* light: an impulse of 9e99 gives 9e101 */
+  assert_status (carom_world_add_box (w, &d, 1.0, 1.0, &ids[0]), CAROM_OK);
+  d.density = 1.0;
+  d.type = CAROM_STATIC, d.x = 5.0;
+  assert_status (carom_world_add_box (w, &d, 1.0, 1.0, &ids[1]), CAROM_OK);
+  d.type = CAROM_KINEMATIC, d.x = -5.0, d.vx = 0.5;
+  assert_status (carom_world_add_box (w, &d, 1.0, 1.0, &ids[2]), CAROM_OK);
+  assert_status (carom_world_add_circle (w, NULL, 1.0, &ids[3]), CAROM_OK);
+  assert_status (carom_world_remove_body (w, ids[3]), CAROM_OK);
+  for (k = 0; k < 10; ++k)
+    assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+  for (i = 0; i < sizeof api_cases / sizeof api_cases[0]; ++i)
+    {
+      const api_case *t = &api_cases[i];
+      uint64_t before = world_state_hash (w);
+      carom_status s = call_api (t->body == 4 ? NULL : w, t, t->body == 4 ? ids[0] : ids[t->body]);
+      if (s != t->want)
+        fail_msg ("%s: returned %d (%s), wanted %d (%s)", t->what, (int) s, carom_status_string (s), (int) t->want,
+                  carom_status_string (t->want));
+      if (world_state_hash (w) != before)
+        fail_msg ("%s: refused, but the world changed", t->what);
+    }
+  /* the calls that return counts: minus the status, nothing written */
+  {
+    uint64_t before = world_state_hash (w);
+    carom_body_id out[2] = { 5, 5 };
+    assert_int_equal (carom_world_query_aabb (NULL, 0, 0, 1, 1, ~0u, out, 2), -CAROM_ERR_NULL_ARGUMENT);
+    assert_int_equal (carom_world_query_aabb (w, 0, 0, 1, 1, ~0u, NULL, 2), -CAROM_ERR_NULL_ARGUMENT);
+    assert_int_equal (carom_world_query_aabb (w, 0, 0, 1, 1, ~0u, out, -1), -CAROM_ERR_BAD_ARGUMENT);
+    assert_int_equal (carom_world_query_aabb (w, 1, 0, 0, 1, ~0u, out, 2), -CAROM_ERR_BAD_ARGUMENT);
+    assert_int_equal (carom_world_query_aabb (w, 0, 1, 1, 0, ~0u, out, 2), -CAROM_ERR_BAD_ARGUMENT);
+    assert_int_equal (carom_world_query_aabb (w, NAN, 0, 1, 1, ~0u, out, 2), -CAROM_ERR_NOT_FINITE);
+    assert_int_equal (carom_world_query_aabb (w, -2e100, 0, 1, 1, ~0u, out, 2), -CAROM_ERR_BAD_ARGUMENT);
+    assert_int_equal (carom_world_query_point (NULL, 0, 0, ~0u, out, 2), -CAROM_ERR_NULL_ARGUMENT);
+    assert_int_equal (carom_world_query_point (w, 0, INFINITY, ~0u, out, 2), -CAROM_ERR_NOT_FINITE);
+    assert_int_equal (carom_world_query_point (w, 0, 2e100, ~0u, out, 2), -CAROM_ERR_BAD_ARGUMENT);
+    assert_int_equal (carom_world_query_point (w, 0, 0, ~0u, out, -5), -CAROM_ERR_BAD_ARGUMENT);
+    assert_int_equal (carom_world_get_events (NULL, events, 4), -CAROM_ERR_NULL_ARGUMENT);
+    assert_int_equal (carom_world_get_events (w, NULL, 4), -CAROM_ERR_NULL_ARGUMENT);
+    assert_int_equal (carom_world_get_events (w, events, -1), -CAROM_ERR_BAD_ARGUMENT);
+    assert_true (out[0] == 5 && out[1] == 5);
+    assert_true (world_state_hash (w) == before);
+    /* a query with capacity 0 only counts; a NULL hit is refused */
+    assert_true (carom_world_query_point (w, 0, 0.5, ~0u, NULL, 0) == 1);
+    assert_status (carom_world_cast_ray (w, 0, 0, 1, 1, ~0u, NULL), CAROM_ERR_NULL_ARGUMENT);
+    assert_status (carom_world_cast_ray (w, 0, 3, 0, -3, 0u, &hit), CAROM_OK); /* nothing in mask 0 */
+    assert_true (hit.body == CAROM_NULL_BODY);
+  }
+  /* the debug draw's struct */
+  assert_status (carom_debug_draw_init (NULL, sizeof draw), CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_debug_draw_init (&draw, sizeof draw - 1), CAROM_ERR_BAD_STRUCT_SIZE);
+  assert_status (carom_debug_draw_init (&draw, sizeof draw), CAROM_OK);
+  assert_status (carom_world_draw (NULL, &draw), CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_world_draw (w, NULL), CAROM_ERR_NULL_ARGUMENT);
+  draw.size = 3;
+  assert_status (carom_world_draw (w, &draw), CAROM_ERR_BAD_STRUCT_SIZE);
+  /* forces too strong for an update: refused, nothing changes, and
+   * clear_forces is the way out */
+  {
+    uint64_t before;
+    assert_status (carom_body_apply_force (w, ids[0], 9e99, 0.0, 0.0, 0.5), CAROM_OK);
+    assert_status (carom_body_apply_force (w, ids[0], 9e99, 0.0, 0.0, 0.5), CAROM_ERR_BAD_ARGUMENT); /* the sum */
+    before = world_state_hash (w);
+    assert_status (carom_world_update (w, 1e90), CAROM_ERR_BAD_ARGUMENT);
+    assert_true (world_state_hash (w) == before);
+    assert_status (carom_world_clear_forces (w), CAROM_OK);
+    assert_status (carom_world_update (w, 1e90), CAROM_OK);
+  }
+  carom_world_destroy (w);
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
@@ -1182,6 +1356,7 @@ int main (void)
     cmocka_unit_test (test_central_gravity_near_the_centre),
     cmocka_unit_test (test_scene_extremes),
     cmocka_unit_test (test_scene_error_struct_and_empty_text),
+    cmocka_unit_test (test_version_0_2_calls_refuse_bad_input),
   };
   return cmocka_run_group_tests_name ("bad_input", tests, NULL, NULL);
 }

@@ -234,6 +234,34 @@ static void test_def_defaults (void **state)
   assert_null (w);
 }
 
+/* The version 0.2 options: kinematic, sensor and the filter. */
+static void test_kinematic_sensor_and_filter_options (void **state)
+{
+  carom_world *w = load ("gravity 0 -10\n"
+                         "box 6 0.5 kinematic velocity 1 0 spin 0.5\n"
+                         "box 4 1 at 0 3 static sensor\n"
+                         "circle 0.5 at 0 6 category 4 mask 4294967295 group -7\n");
+  carom_body_type type;
+  uint32_t category, mask;
+  int32_t group, sensor;
+  double vx, vy, spin;
+  (void) state;
+  assert_status (carom_body_get_type (w, body_at (w, 0), &type), CAROM_OK);
+  assert_int_equal (type, CAROM_KINEMATIC);
+  assert_status (carom_body_get_velocity (w, body_at (w, 0), &vx, &vy), CAROM_OK);
+  assert_status (carom_body_get_spin (w, body_at (w, 0), &spin), CAROM_OK);
+  assert_true (vx == 1.0 && vy == 0.0 && spin == 0.5);
+  assert_status (carom_body_is_sensor (w, body_at (w, 1), &sensor), CAROM_OK);
+  assert_int_equal (sensor, 1);
+  assert_status (carom_body_is_sensor (w, body_at (w, 2), &sensor), CAROM_OK);
+  assert_int_equal (sensor, 0);
+  assert_status (carom_body_get_filter (w, body_at (w, 2), &category, &mask, &group), CAROM_OK);
+  assert_true (category == 4u && mask == 0xffffffffu && group == -7);
+  assert_status (carom_body_get_filter (w, body_at (w, 1), &category, &mask, &group), CAROM_OK);
+  assert_true (category == 1u && mask == 0xffffffffu && group == 0);
+  carom_world_destroy (w);
+}
+
 typedef struct bad_case {
   const char *text;
   int32_t line;
@@ -285,6 +313,15 @@ static const bad_case bad_cases[] = {
   { "circle 1 static velocity 1 0\n", 1, CAROM_ERR_STATIC_BODY },
   { "circle 1 static fixed\n", 1, CAROM_ERR_STATIC_BODY },
   { "circle 1 fixed spin 2\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "box 1 1 static kinematic\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "box 1 1 kinematic fixed\n", 1, CAROM_ERR_STATIC_BODY },
+  { "box 1 1 sensor 1\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "box 1 1 category\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "box 1 1 category 1.5\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "box 1 1 mask -1\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "box 1 1 mask 4294967296\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1\nbox 1 1 group 3000000000\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  { "box 1 1 group 0.5\n", 1, CAROM_ERR_SCENE_SYNTAX },
   { "central 0 0 -5\n", 1, CAROM_ERR_BAD_ARGUMENT },
   { "central 0 0\n", 1, CAROM_ERR_SCENE_SYNTAX },
   { "damping -0.1\n", 1, CAROM_ERR_BAD_ARGUMENT },
@@ -596,6 +633,7 @@ static void test_shipped_scenes (void **state)
     { "scenes/pyramid.scene", 211, 211 },
     { "scenes/rain.scene", 2003, 2003 },
     { "scenes/gas.scene", 504, 504 },
+    { "scenes/platform.scene", 10, 10 },
   };
   size_t k;
   (void) state;
@@ -642,6 +680,7 @@ int main (void)
     cmocka_unit_test (test_settings_order),
     cmocka_unit_test (test_def_defaults),
     cmocka_unit_test (test_bad_lines),
+    cmocka_unit_test (test_kinematic_sensor_and_filter_options),
     cmocka_unit_test (test_messages),
     cmocka_unit_test (test_nul_byte),
     cmocka_unit_test (test_error_struct_optional),

@@ -139,6 +139,35 @@ static void test_mass_ratio_1000_both_ways (void **state)
 /* Fuzz finding F10: a box 1e122 times heavier than the one it lands on,
  * spinning, under the vertex-edge method. Bound: every state finite, and
  * the light box, squeezed out from under it, stays on the ground. */
+/* Fuzz finding F11: a world friction of 1e308 mixed as sqrt (mu mu) is
+ * infinite, and the batches' friction limit mu times a zero normal impulse
+ * was NaN. A box resting on the ground and a circle landing beside it
+ * must stay finite, and hold fast. */
+static void test_huge_friction_stays_finite (void **state)
+{
+  carom_world *w;
+  carom_world_def def;
+  carom_body_id box;
+  double vx, vy;
+  int step;
+  (void) state;
+  carom_world_def_init (&def, sizeof def);
+  def.gravity_y = -10.0;
+  def.friction = 1e308;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  add_static_box (w, 0, -0.5, 40, 1);
+  box = add_box (w, CAROM_DYNAMIC, 0.0, 0.5, 0.0, 1.0, 1.0);
+  assert_status (carom_body_set_velocity (w, box, 1.0, 0.0), CAROM_OK);
+  for (step = 0; step < 60; ++step)
+    {
+      assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+      assert_world_finite (w);
+    }
+  carom_body_get_velocity (w, box, &vx, &vy);
+  assert_near_abs (vx, 0.0, 1e-9); /* stopped by the friction at once */
+  carom_world_destroy (w);
+}
+
 static void test_extreme_mass_ratio_stays_finite (void **state)
 {
   carom_world *w;
@@ -602,6 +631,7 @@ int main (void)
     cmocka_unit_test (test_mass_ratio_1000_both_ways),
     cmocka_unit_test (test_stack_far_from_origin_1e6),
     cmocka_unit_test (test_extreme_mass_ratio_stays_finite),
+    cmocka_unit_test (test_huge_friction_stays_finite),
     cmocka_unit_test (test_small_boxes_under_full_gravity_stand),
     cmocka_unit_test (test_elastic_cluster_keeps_its_energy),
     cmocka_unit_test (test_bullet_300_never_passes_thin_wall),

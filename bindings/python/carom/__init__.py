@@ -28,6 +28,10 @@ __all__ = [
     "CaromError",
     "ClosedWorldError",
     "Contact",
+    "Event",
+    "EventType",
+    "RayHit",
+    "draw",
     "NarrowPhase",
     "Status",
     "World",
@@ -69,6 +73,27 @@ class Status(enum.IntEnum):
     STATIC_BODY = 16
     SCENE_SYNTAX = 17
     IO = 18
+
+
+class EventType(enum.IntEnum):
+    """carom_event_type: what happened between two bodies in the last step."""
+
+    CONTACT_BEGIN = 0
+    CONTACT_END = 1
+    SENSOR_BEGIN = 2
+    SENSOR_END = 3
+
+
+#: The first body a ray meets: the Body, the point and outward normal on
+#: its outline, and the fraction of the segment.
+RayHit = collections.namedtuple("RayHit", "body point normal fraction")
+
+#: One event of the last step (carom_contact_event): for sensor events, a
+#: is the sensor.
+Event = collections.namedtuple("Event", "type a b point normal approach_speed normal_impulse")
+
+#: Every category bit (a mask that takes every body).
+ALL = 0xFFFFFFFF
 
 
 class NarrowPhase(enum.IntEnum):
@@ -117,6 +142,22 @@ class ClosedWorldError(CaromError):
 def _check(status, what):
     if status != 0:
         raise CaromError(status, "%s: %s" % (what, status_string(status)))
+
+
+def _bits(value, what):
+    if not isinstance(value, int) or isinstance(value, bool):
+        raise TypeError("%s must be an int, got %r" % (what, value))
+    if not 0 <= value <= 0xFFFFFFFF:
+        raise ValueError("%s must fit in 32 bits, got %r" % (what, value))
+    return value
+
+
+def _int32(value, what):
+    if not isinstance(value, int) or isinstance(value, bool):
+        raise TypeError("%s must be an int, got %r" % (what, value))
+    if not -2**31 <= value < 2**31:
+        raise ValueError("%s must fit in an int32, got %r" % (what, value))
+    return value
 
 
 def _finite(value, what):
@@ -184,6 +225,8 @@ class World:
     def _adopt(self, ptr):
         self._ptr = ptr
         self._finalizer = weakref.finalize(self, _lib.carom_world_destroy, ptr)
+        self._callbacks = {}
+        self._user_data = {}
 
     @classmethod
     def _loaded(cls, loader, source, settings):
@@ -247,6 +290,15 @@ class World:
 
     # ----------------------------------------------------------- simulation
     def step(self, dt):
+        """Advance by dt; then the callbacks of on_contact see the events."""
+        self._step(dt)
+        if self._callbacks:
+            for ev in self.events():
+                fn = self._callbacks.get(ev.type)
+                if fn is not None:
+                    fn(ev)
+
+    def _step(self, dt):
         """Advance the world by dt (> 0, finite)."""
         _check(_lib.carom_world_update(self._handle(), _finite(dt, "dt")), "step")
 
@@ -326,11 +378,119 @@ class World:
                                (nx.value, ny.value), depth.value))
         return out
 
+    # -------------------------------------------------------------- queries
+    def raycast(self, start, end, mask=ALL):
+        """The first body the segment from start to end enters (among those
+        whose category & mask is non-zero), as a RayHit, or None."""
+        x0, y0 = _pair(start, "start")
+        x1, y1 = _pair(end, "end")
+        hit = _native.RayHit()
+        _check(_lib.carom_world_cast_ray(self._handle(), x0, y0, x1, y1, _bits(mask, "mask"),
+                                         ctypes.byref(hit)), "raycast")
+        if hit.body == 0:
+            return None
+        return RayHit(Body(self, hit.body), (hit.x, hit.y), (hit.nx, hit.ny), hit.fraction)
+
+    def _listed(self, call, what):
+        n = call(None, 0)
+        if n < 0:
+            _check(-n, what)
+        ids = (_native.c_body_id * max(n, 1))()
+        n = min(n, call(ids, n))
+        return [Body(self, ids[i]) for i in range(n)]
+
+    def query_point(self, point, mask=ALL):
+        """The bodies whose shape contains the point, in creation order."""
+        x, y = _pair(point, "point")
+        h, m = self._handle(), _bits(mask, "mask")
+        return self._listed(lambda ids, cap: _lib.carom_world_query_point(h, x, y, m, ids, cap),
+                            "query_point")
+
+    def query_aabb(self, lower, upper, mask=ALL):
+        """The bodies whose bounding box overlaps the box from lower to upper."""
+        x0, y0 = _pair(lower, "lower")
+        x1, y1 = _pair(upper, "upper")
+        h, m = self._handle(), _bits(mask, "mask")
+        return self._listed(
+            lambda ids, cap: _lib.carom_world_query_aabb(h, x0, y0, x1, y1, m, ids, cap), "query_aabb")
+
+    # --------------------------------------------------------------- events
+    def events(self):
+        """The events of the last step, as Event tuples."""
+        h = self._handle()
+        n = _lib.carom_world_get_events(h, None, 0)
+        if n < 0:
+            _check(-n, "events")
+        buf = (_native.ContactEvent * max(n, 1))()
+        n = min(n, _lib.carom_world_get_events(h, buf, n))
+        return [Event(EventType(e.type), Body(self, e.a), Body(self, e.b), (e.x, e.y), (e.nx, e.ny),
+                      e.approach_speed, e.normal_impulse) for e in buf[:n]]
+
+    def on_contact(self, begin=None, end=None, sensor_begin=None, sensor_end=None):
+        """Call these with each Event of their kind after every step (None:
+        not called)."""
+        for kind, fn in ((EventType.CONTACT_BEGIN, begin), (EventType.CONTACT_END, end),
+                         (EventType.SENSOR_BEGIN, sensor_begin), (EventType.SENSOR_END, sensor_end)):
+            if fn is None:
+                self._callbacks.pop(kind, None)
+            elif not callable(fn):
+                raise TypeError("on_contact callbacks must be callable, got %r" % (fn,))
+            else:
+                self._callbacks[kind] = fn
+
+    def clear_forces(self):
+        """Drop the forces and torques applied since the last step."""
+        _check(_lib.carom_world_clear_forces(self._handle()), "clear_forces")
+
+    # ----------------------------------------------------------- debug draw
+    def debug_draw(self, polygon=None, circle=None, segment=None, point=None, bodies=True,
+                   contacts=True):
+        """Call polygon(points, body), circle(center, radius, angle, body),
+        segment(p0, p1) and point(p) for every body and contact
+        (carom_world_draw); any may be None."""
+        d = _native.DebugDraw()
+        _check(_lib.carom_debug_draw_init(ctypes.byref(d), ctypes.sizeof(d)), "debug_draw")
+        errors = []
+
+        def guard(fn):
+            def call(*args):
+                if errors:
+                    return
+                try:
+                    fn(*args)
+                except BaseException as exc:  # raised again after the C call
+                    errors.append(exc)
+            return call
+        if polygon is not None:
+            d.polygon = _native.DRAW_POLYGON_FN(guard(
+                lambda xy, n, b, u: polygon([(xy[2 * k], xy[2 * k + 1]) for k in range(n)],
+                                            Body(self, b))))
+        if circle is not None:
+            d.circle = _native.DRAW_CIRCLE_FN(guard(
+                lambda x, y, r, a, b, u: circle((x, y), r, a, Body(self, b))))
+        if segment is not None:
+            d.segment = _native.DRAW_SEGMENT_FN(guard(
+                lambda x0, y0, x1, y1, u: segment((x0, y0), (x1, y1))))
+        if point is not None:
+            d.point = _native.DRAW_POINT_FN(guard(lambda x, y, u: point((x, y))))
+        d.draw_bodies = 1 if bodies else 0
+        d.draw_contacts = 1 if contacts else 0
+        _check(_lib.carom_world_draw(self._handle(), ctypes.byref(d)), "debug_draw")
+        if errors:
+            raise errors[0]
+
     # --------------------------------------------------------------- bodies
     def _body_def(self, x=0.0, y=0.0, angle=0.0, vx=0.0, vy=0.0, spin=0.0, density=1.0,
-                  restitution=None, friction=None, static=False):
+                  restitution=None, friction=None, static=False, kinematic=False, sensor=False,
+                  category=1, mask=ALL, group=0):
         d = _native.new_def(_native.BodyDef)
-        d.type = _native.STATIC if static else _native.DYNAMIC
+        if static and kinematic:
+            raise ValueError("a body is static or kinematic, not both")
+        d.type = (_native.STATIC if static else _native.KINEMATIC if kinematic
+                  else _native.DYNAMIC)
+        d.sensor = 1 if sensor else 0
+        d.category, d.mask = _bits(category, "category"), _bits(mask, "mask")
+        d.group = _int32(group, "group")
         d.x, d.y = _finite(x, "x"), _finite(y, "y")
         d.angle = _finite(angle, "angle")
         d.vx, d.vy = _finite(vx, "vx"), _finite(vy, "vy")
@@ -350,7 +510,10 @@ class World:
 
     def add_circle(self, radius, **options):
         """A circle of the given radius centred on (x, y). Options: x, y,
-        angle, vx, vy, spin, density, restitution, friction, static."""
+        angle, vx, vy, spin, density, restitution, friction, static,
+        kinematic (moves at vx, vy, spin whatever touches it), sensor
+        (reports overlaps as events, pushes nothing), category, mask and
+        group (collision filtering: docs/api.md)."""
         r = _finite(radius, "radius")
         return self._add("add_circle",
                          lambda h, d, i: _lib.carom_world_add_circle(h, d, r, i), options)
@@ -411,10 +574,16 @@ class Body:
     def __hash__(self):
         return hash((id(self._world), self._id))
 
+    @property
+    def index(self):
+        """The id's slot (1-based) and generation: what the id is made of."""
+        return (self._id & 0xFFFFFFFF, self._id >> 32)
+
     def __repr__(self):
         if not self.is_alive:
-            return "<carom.Body %#x (gone)>" % self._id
-        return "<carom.Body %#x %s at (%g, %g)>" % ((self._id, self.shape) + self.position)
+            return "<carom.Body %d.%d (gone)>" % self.index
+        return "<carom.Body %d.%d %s %s at (%g, %g)>" % (self.index + (self.type, self.shape)
+                                                         + self.position)
 
     def _h(self):
         return self._world._handle(for_body=True)
@@ -433,6 +602,7 @@ class Body:
     def remove(self):
         """Remove the body from its world; the handle becomes stale."""
         _check(_lib.carom_world_remove_body(self._h(), self._id), "remove")
+        self._world._user_data.pop(self._id, None)
 
     @property
     def awake(self):
@@ -537,6 +707,81 @@ class Body:
         """The friction coefficient in effect (after the world's default)."""
         return self._get(_lib.carom_body_get_material, "friction", 2)[1]
 
+    # ------------------------------------------------ forces and impulses
+    def _at(self, point):
+        return self.position if point is None else _pair(point, "point")
+
+    def apply_force(self, force, point=None):
+        """A force (fx, fy) at a world point (default: the centre of mass),
+        acting over the next step."""
+        fx, fy = _pair(force, "force")
+        px, py = self._at(point)
+        _check(_lib.carom_body_apply_force(self._h(), self._id, fx, fy, px, py), "apply_force")
+
+    def apply_torque(self, torque):
+        """A torque acting over the next step."""
+        _check(_lib.carom_body_apply_torque(self._h(), self._id, _finite(torque, "torque")),
+               "apply_torque")
+
+    def apply_impulse(self, impulse, point=None):
+        """An impulse (jx, jy) at a world point (default: the centre of mass):
+        the velocity changes at once by J / m, the spin by r x J / I."""
+        jx, jy = _pair(impulse, "impulse")
+        px, py = self._at(point)
+        _check(_lib.carom_body_apply_impulse(self._h(), self._id, jx, jy, px, py), "apply_impulse")
+
+    def apply_angular_impulse(self, impulse):
+        _check(_lib.carom_body_apply_angular_impulse(self._h(), self._id,
+                                                     _finite(impulse, "impulse")),
+               "apply_angular_impulse")
+
+    # ------------------------------------------------- kind, filter, data
+    @property
+    def type(self):
+        """'dynamic', 'static' or 'kinematic'."""
+        kind = ctypes.c_int()
+        _check(_lib.carom_body_get_type(self._h(), self._id, ctypes.byref(kind)), "type")
+        return {_native.DYNAMIC: "dynamic", _native.STATIC: "static",
+                _native.KINEMATIC: "kinematic"}[kind.value]
+
+    @property
+    def is_kinematic(self):
+        return self.type == "kinematic"
+
+    @property
+    def is_sensor(self):
+        flag = ctypes.c_int32()
+        _check(_lib.carom_body_is_sensor(self._h(), self._id, ctypes.byref(flag)), "is_sensor")
+        return flag.value != 0
+
+    @property
+    def filter(self):
+        """(category, mask, group): collision filtering (docs/api.md)."""
+        c, m, g = ctypes.c_uint32(), ctypes.c_uint32(), ctypes.c_int32()
+        _check(_lib.carom_body_get_filter(self._h(), self._id, ctypes.byref(c), ctypes.byref(m),
+                                          ctypes.byref(g)), "filter")
+        return (c.value, m.value, g.value)
+
+    @filter.setter
+    def filter(self, value):
+        try:
+            category, mask, group = value
+        except (TypeError, ValueError):
+            raise TypeError("filter must be (category, mask, group), got %r" % (value,)) from None
+        _check(_lib.carom_body_set_filter(self._h(), self._id, _bits(category, "category"),
+                                          _bits(mask, "mask"), _int32(group, "group")), "filter")
+
+    @property
+    def user_data(self):
+        """Any Python object kept with the body (None by default)."""
+        _check(_lib.carom_body_check(self._h(), self._id), "user_data")
+        return self._world._user_data.get(self._id)
+
+    @user_data.setter
+    def user_data(self, value):
+        _check(_lib.carom_body_check(self._h(), self._id), "user_data")
+        self._world._user_data[self._id] = value
+
     @property
     def vertices(self):
         """A polygon's vertices in world coordinates, counter-clockwise, as
@@ -552,3 +797,30 @@ class Body:
         return [(xy[2 * k], xy[2 * k + 1]) for k in range(min(n, count.value))]
 
 
+
+
+def draw(world, ax, contacts=True, **style):
+    """Draw a world on a matplotlib Axes (or anything with fill and plot):
+    polygons and circles filled, a circle's radius marker, and the contact
+    points and normals. Extra keyword arguments go to ax.fill."""
+    import math
+    style.setdefault("alpha", 0.6)
+    style.setdefault("edgecolor", "black")
+
+    def polygon(points, body):
+        ax.fill([p[0] for p in points], [p[1] for p in points], **style)
+
+    def circle(center, radius, angle, body):
+        n = 32
+        ax.fill([center[0] + radius * math.cos(2 * math.pi * k / n) for k in range(n)],
+                [center[1] + radius * math.sin(2 * math.pi * k / n) for k in range(n)], **style)
+        ax.plot([center[0], center[0] + radius * math.cos(angle)],
+                [center[1], center[1] + radius * math.sin(angle)], color="black", linewidth=0.8)
+
+    def segment(p0, p1):
+        ax.plot([p0[0], p1[0]], [p0[1], p1[1]], color="red", linewidth=0.8)
+
+    def point(p):
+        ax.plot([p[0]], [p[1]], marker="o", markersize=2, color="red")
+
+    world.debug_draw(polygon, circle, segment, point, contacts=contacts)

@@ -61,7 +61,7 @@ class WorldDef(ctypes.Structure):
 
 
 class BodyDef(ctypes.Structure):
-    """carom_body_def, version 0.1 layout (fields only ever appended)."""
+    """carom_body_def, version 0.2 layout (fields only ever appended)."""
 
     _fields_ = [
         ("size", ctypes.c_uint32),
@@ -75,6 +75,64 @@ class BodyDef(ctypes.Structure):
         ("density", ctypes.c_double),
         ("restitution", ctypes.c_double),
         ("friction", ctypes.c_double),
+        ("user_data", ctypes.c_void_p),  # version 0.2
+        ("category", ctypes.c_uint32),
+        ("mask", ctypes.c_uint32),
+        ("group", ctypes.c_int32),
+        ("sensor", ctypes.c_int32),
+    ]
+
+
+class RayHit(ctypes.Structure):
+    """carom_ray_hit (version 0.2)."""
+
+    _fields_ = [
+        ("body", ctypes.c_uint64),
+        ("x", ctypes.c_double),
+        ("y", ctypes.c_double),
+        ("nx", ctypes.c_double),
+        ("ny", ctypes.c_double),
+        ("fraction", ctypes.c_double),
+    ]
+
+
+class ContactEvent(ctypes.Structure):
+    """carom_contact_event (version 0.2)."""
+
+    _fields_ = [
+        ("type", ctypes.c_int),
+        ("a", ctypes.c_uint64),
+        ("b", ctypes.c_uint64),
+        ("x", ctypes.c_double),
+        ("y", ctypes.c_double),
+        ("nx", ctypes.c_double),
+        ("ny", ctypes.c_double),
+        ("approach_speed", ctypes.c_double),
+        ("normal_impulse", ctypes.c_double),
+    ]
+
+
+DRAW_POLYGON_FN = ctypes.CFUNCTYPE(None, ctypes.POINTER(ctypes.c_double), ctypes.c_int32,
+                                   ctypes.c_uint64, ctypes.c_void_p)
+DRAW_CIRCLE_FN = ctypes.CFUNCTYPE(None, ctypes.c_double, ctypes.c_double, ctypes.c_double,
+                                  ctypes.c_double, ctypes.c_uint64, ctypes.c_void_p)
+DRAW_SEGMENT_FN = ctypes.CFUNCTYPE(None, ctypes.c_double, ctypes.c_double, ctypes.c_double,
+                                   ctypes.c_double, ctypes.c_void_p)
+DRAW_POINT_FN = ctypes.CFUNCTYPE(None, ctypes.c_double, ctypes.c_double, ctypes.c_void_p)
+
+
+class DebugDraw(ctypes.Structure):
+    """carom_debug_draw (version 0.2)."""
+
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("polygon", DRAW_POLYGON_FN),
+        ("circle", DRAW_CIRCLE_FN),
+        ("segment", DRAW_SEGMENT_FN),
+        ("point", DRAW_POINT_FN),
+        ("user", ctypes.c_void_p),
+        ("draw_bodies", ctypes.c_int32),
+        ("draw_contacts", ctypes.c_int32),
     ]
 
 
@@ -90,7 +148,8 @@ class SceneError(ctypes.Structure):
 
 
 # Constants of include/carom.h (enum values are fixed by the ABI).
-DYNAMIC, STATIC = 0, 1
+DYNAMIC, STATIC, KINEMATIC = 0, 1, 2
+EVENT_CONTACT_BEGIN, EVENT_CONTACT_END, EVENT_SENSOR_BEGIN, EVENT_SENSOR_END = 0, 1, 2, 3
 SHAPE_CIRCLE, SHAPE_POLYGON = 0, 1
 NARROW_SAT, NARROW_VERTEX_EDGE = 0, 1
 MAX_POLYGON_VERTICES = 1024
@@ -156,6 +215,29 @@ PROTOTYPES = {
     "carom_body_get_material": (c_status, [_W, _ID, c_double_p, c_double_p]),
     "carom_body_get_vertices": (
         c_status, [_W, _ID, c_double_p, ctypes.c_int32, c_int32_p]),
+    # version 0.2
+    "carom_body_apply_force": (c_status, [_W, _ID, _D, _D, _D, _D]),
+    "carom_body_apply_torque": (c_status, [_W, _ID, _D]),
+    "carom_world_clear_forces": (c_status, [_W]),
+    "carom_body_apply_impulse": (c_status, [_W, _ID, _D, _D, _D, _D]),
+    "carom_body_apply_angular_impulse": (c_status, [_W, _ID, _D]),
+    "carom_body_get_user_data": (c_status, [_W, _ID, ctypes.POINTER(ctypes.c_void_p)]),
+    "carom_body_set_user_data": (c_status, [_W, _ID, ctypes.c_void_p]),
+    "carom_body_set_filter": (c_status, [_W, _ID, ctypes.c_uint32, ctypes.c_uint32, ctypes.c_int32]),
+    "carom_body_get_filter": (
+        c_status, [_W, _ID, ctypes.POINTER(ctypes.c_uint32), ctypes.POINTER(ctypes.c_uint32),
+                   ctypes.POINTER(ctypes.c_int32)]),
+    "carom_body_is_sensor": (c_status, [_W, _ID, ctypes.POINTER(ctypes.c_int32)]),
+    "carom_world_cast_ray": (
+        c_status, [_W, _D, _D, _D, _D, ctypes.c_uint32, ctypes.POINTER(RayHit)]),
+    "carom_world_query_aabb": (
+        ctypes.c_int32, [_W, _D, _D, _D, _D, ctypes.c_uint32, c_body_id_p, ctypes.c_int32]),
+    "carom_world_query_point": (
+        ctypes.c_int32, [_W, _D, _D, ctypes.c_uint32, c_body_id_p, ctypes.c_int32]),
+    "carom_world_get_events": (
+        ctypes.c_int32, [_W, ctypes.POINTER(ContactEvent), ctypes.c_int32]),
+    "carom_debug_draw_init": (c_status, [ctypes.c_void_p, ctypes.c_uint32]),
+    "carom_world_draw": (c_status, [_W, ctypes.POINTER(DebugDraw)]),
     "carom_scene_load_text": (
         c_status,
         [ctypes.POINTER(c_world_p), ctypes.c_char_p, ctypes.c_size_t,

@@ -354,3 +354,145 @@ def test_effects_switch_on_by_use_and_damping_is_exact():
         assert "fixed-rotation" in w.effects
         with pytest.raises(carom.CaromError):
             w.set_damping(-1)
+
+
+# ------------------------------------------------------------ version 0.2
+
+def test_impulses_and_forces_are_exact():
+    with carom.World() as world:
+        box = world.add_box(2.0, 1.0, x=1.0, y=2.0)
+        m, inertia = box.mass, box.inertia
+        box.apply_impulse((3.0, -4.0))
+        assert box.velocity == pytest.approx((3.0 / m, -4.0 / m), rel=1e-15)
+        assert box.spin == 0.0
+        box.apply_impulse((0.0, 2.0), point=(1.5, 2.0))  # 0.5 to the right of the centre
+        assert box.spin == pytest.approx(0.5 * 2.0 / inertia, rel=1e-14)
+        v0 = box.velocity
+        box.apply_force((6.0, 0.0))
+        box.apply_torque(1.0)
+        s0 = box.spin
+        world.step(1 / 60)
+        assert box.velocity[0] - v0[0] == pytest.approx(6.0 / 60 / m, rel=1e-12)
+        assert box.spin - s0 == pytest.approx(1.0 / 60 / inertia, rel=1e-12)
+        v1 = box.velocity
+        world.step(1 / 60)  # the force acted over one step only
+        assert box.velocity == v1
+
+
+def test_kinematic_platform_carries_a_box():
+    with carom.World(gravity=(0, -10)) as world:
+        platform = world.add_box(6.0, 0.5, kinematic=True, vx=1.0, friction=0.6)
+        box = world.add_box(1.0, 1.0, y=0.75, friction=0.6)
+        assert platform.type == "kinematic" and platform.is_kinematic and platform.mass == 0.0
+        for _ in range(120):
+            world.step(1 / 60)
+        assert platform.position == pytest.approx((2.0, 0.0), abs=1e-9)
+        assert box.velocity == pytest.approx((1.0, 0.0), abs=1e-3)
+        with pytest.raises(carom.CaromError) as err:
+            platform.apply_force((1.0, 0.0))
+        assert err.value.status == carom.Status.STATIC_BODY
+
+
+def test_filtering_and_groups():
+    def falls_through(**ball):
+        with carom.World(gravity=(0, -10)) as world:
+            world.add_box(10, 1, y=-0.5, static=True, category=2, group=-1)
+            b = world.add_circle(0.5, y=1.0, **ball)
+            for _ in range(60):
+                world.step(1 / 60)
+            return b.position[1] < 0.0
+    assert not falls_through()
+    assert falls_through(mask=1)        # not the ground's category
+    assert falls_through(group=-1)      # the same negative group
+    assert not falls_through(group=-2)
+    with carom.World() as world:
+        b = world.add_circle(1.0)
+        assert b.filter == (1, carom.ALL, 0)
+        b.filter = (4, 3, 7)
+        assert b.filter == (4, 3, 7)
+        with pytest.raises(ValueError):
+            b.filter = (1 << 33, 0, 0)
+
+
+def test_raycast_and_queries():
+    with carom.World() as world:
+        box = world.add_box(2.0, 2.0, static=True)
+        ball = world.add_circle(1.0, x=10.0)
+        hit = world.raycast((-5.0, 0.25), (5.0, 0.25))
+        assert hit.body == box
+        assert hit.point == pytest.approx((-1.0, 0.25), abs=1e-12)
+        assert hit.normal == pytest.approx((-1.0, 0.0), abs=1e-12)
+        assert hit.fraction == pytest.approx(0.4, abs=1e-12)
+        assert world.raycast((-5.0, 3.0), (5.0, 3.0)) is None
+        assert world.raycast((-5.0, 0.0), (15.0, 0.0), mask=0) is None
+        assert world.query_point((10.5, 0.0)) == [ball]
+        assert world.query_point((5.0, 0.0)) == []
+        assert world.query_aabb((-1.5, -1.5), (9.5, 0.0)) == [box, ball]
+        with pytest.raises(carom.CaromError) as err:
+            world.query_aabb((1.0, 0.0), (0.0, 1.0))
+        assert err.value.status == carom.Status.BAD_ARGUMENT
+
+
+def test_events_and_sensors():
+    with carom.World(gravity=(0, -10)) as world:
+        ground = world.add_box(10, 1, y=-0.5, static=True)
+        zone = world.add_box(4, 1, y=1.5, static=True, sensor=True)
+        ball = world.add_circle(0.25, y=3.0)
+        assert zone.is_sensor and not ball.is_sensor
+        seen = []
+        world.on_contact(begin=seen.append, sensor_begin=seen.append, sensor_end=seen.append)
+        for _ in range(120):
+            world.step(1 / 60)
+        kinds = [e.type for e in seen]
+        assert kinds == [carom.EventType.SENSOR_BEGIN, carom.EventType.SENSOR_END,
+                         carom.EventType.CONTACT_BEGIN]
+        assert seen[0].a == zone and seen[0].b == ball
+        landing = seen[2]
+        assert {landing.a, landing.b} == {ground, ball}
+        assert landing.approach_speed == pytest.approx((2 * 10 * 2.75) ** 0.5, rel=0.05)
+        assert world.events() == []  # resting: nothing new
+        with pytest.raises(TypeError):
+            world.on_contact(begin=3)
+
+
+def test_user_data_and_repr():
+    with carom.World() as world:
+        b = world.add_circle(1.0)
+        assert b.user_data is None
+        b.user_data = {"name": "ball"}
+        assert world.bodies[0].user_data == {"name": "ball"}
+        assert repr(b).startswith("<carom.Body 1.1 dynamic circle")
+        b.remove()
+        with pytest.raises(carom.CaromError):
+            b.user_data
+
+
+def test_debug_draw_and_matplotlib_style_draw():
+    class Axes:
+        def __init__(self):
+            self.fills, self.plots = 0, 0
+
+        def fill(self, xs, ys, **kw):
+            assert len(xs) == len(ys) >= 3
+            self.fills += 1
+
+        def plot(self, xs, ys, **kw):
+            self.plots += 1
+    with carom.World(gravity=(0, -10)) as world:
+        world.add_box(10, 1, y=-0.5, static=True)
+        world.add_box(1, 1, y=0.5)
+        world.add_circle(0.5, x=2.0, y=0.5)
+        world.step(1 / 60)
+        polys, points = [], []
+        world.debug_draw(polygon=lambda pts, body: polys.append((len(pts), body)),
+                         point=points.append)
+        assert sorted(n for n, _ in polys) == [4, 4]
+        assert len(points) == len(world.contacts())
+        ax = Axes()
+        carom.draw(world, ax)
+        assert ax.fills == 3 and ax.plots >= 1 + 2 * len(points)
+
+        def boom(pts, body):
+            raise RuntimeError("from the callback")
+        with pytest.raises(RuntimeError):
+            world.debug_draw(polygon=boom)

@@ -81,6 +81,15 @@ pub const CAROM_NARROW_VERTEX_EDGE: carom_narrow_phase = 1;
 pub type carom_body_type = c_int;
 pub const CAROM_DYNAMIC: carom_body_type = 0;
 pub const CAROM_STATIC: carom_body_type = 1;
+/// Version 0.2: moves at its set velocity, infinite mass, no gravity.
+pub const CAROM_KINEMATIC: carom_body_type = 2;
+
+/// Version 0.2: the kinds of [`carom_contact_event`].
+pub type carom_event_type = c_int;
+pub const CAROM_EVENT_CONTACT_BEGIN: carom_event_type = 0;
+pub const CAROM_EVENT_CONTACT_END: carom_event_type = 1;
+pub const CAROM_EVENT_SENSOR_BEGIN: carom_event_type = 2;
+pub const CAROM_EVENT_SENSOR_END: carom_event_type = 3;
 
 pub type carom_shape_kind = c_int;
 pub const CAROM_SHAPE_CIRCLE: carom_shape_kind = 0;
@@ -133,6 +142,54 @@ pub struct carom_body_def {
     pub density: f64,
     pub restitution: f64,
     pub friction: f64,
+    // version 0.2
+    pub user_data: *mut c_void,
+    pub category: u32,
+    pub mask: u32,
+    pub group: i32,
+    pub sensor: i32,
+}
+
+/// Version 0.2: the first body a ray meets.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct carom_ray_hit {
+    pub body: carom_body_id,
+    pub x: f64,
+    pub y: f64,
+    pub nx: f64,
+    pub ny: f64,
+    pub fraction: f64,
+}
+
+/// Version 0.2: one event of the last update.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct carom_contact_event {
+    pub type_: carom_event_type,
+    pub a: carom_body_id,
+    pub b: carom_body_id,
+    pub x: f64,
+    pub y: f64,
+    pub nx: f64,
+    pub ny: f64,
+    pub approach_speed: f64,
+    pub normal_impulse: f64,
+}
+
+/// Version 0.2: the debug draw's callbacks.
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct carom_debug_draw {
+    pub size: u32,
+    pub polygon: Option<unsafe extern "C" fn(xy: *const f64, count: i32, body: carom_body_id, user: *mut c_void)>,
+    pub circle:
+        Option<unsafe extern "C" fn(x: f64, y: f64, radius: f64, angle: f64, body: carom_body_id, user: *mut c_void)>,
+    pub segment: Option<unsafe extern "C" fn(x0: f64, y0: f64, x1: f64, y1: f64, user: *mut c_void)>,
+    pub point: Option<unsafe extern "C" fn(x: f64, y: f64, user: *mut c_void)>,
+    pub user: *mut c_void,
+    pub draw_bodies: i32,
+    pub draw_contacts: i32,
 }
 
 #[repr(C)]
@@ -302,6 +359,24 @@ extern "C" {
         capacity: i32,
         count: *mut i32,
     ) -> carom_status;
+
+    // version 0.2
+    pub fn carom_body_apply_force(world: *mut carom_world, id: carom_body_id, fx: f64, fy: f64, px: f64, py: f64) -> carom_status;
+    pub fn carom_body_apply_torque(world: *mut carom_world, id: carom_body_id, torque: f64) -> carom_status;
+    pub fn carom_world_clear_forces(world: *mut carom_world) -> carom_status;
+    pub fn carom_body_apply_impulse(world: *mut carom_world, id: carom_body_id, jx: f64, jy: f64, px: f64, py: f64) -> carom_status;
+    pub fn carom_body_apply_angular_impulse(world: *mut carom_world, id: carom_body_id, j: f64) -> carom_status;
+    pub fn carom_body_get_user_data(world: *const carom_world, id: carom_body_id, data: *mut *mut c_void) -> carom_status;
+    pub fn carom_body_set_user_data(world: *mut carom_world, id: carom_body_id, data: *mut c_void) -> carom_status;
+    pub fn carom_body_set_filter(world: *mut carom_world, id: carom_body_id, category: u32, mask: u32, group: i32) -> carom_status;
+    pub fn carom_body_get_filter(world: *const carom_world, id: carom_body_id, category: *mut u32, mask: *mut u32, group: *mut i32) -> carom_status;
+    pub fn carom_body_is_sensor(world: *const carom_world, id: carom_body_id, sensor: *mut i32) -> carom_status;
+    pub fn carom_world_cast_ray(world: *const carom_world, x0: f64, y0: f64, x1: f64, y1: f64, mask: u32, hit: *mut carom_ray_hit) -> carom_status;
+    pub fn carom_world_query_aabb(world: *const carom_world, x0: f64, y0: f64, x1: f64, y1: f64, mask: u32, ids: *mut carom_body_id, capacity: i32) -> i32;
+    pub fn carom_world_query_point(world: *const carom_world, x: f64, y: f64, mask: u32, ids: *mut carom_body_id, capacity: i32) -> i32;
+    pub fn carom_world_get_events(world: *const carom_world, events: *mut carom_contact_event, capacity: i32) -> i32;
+    pub fn carom_debug_draw_init(draw: *mut carom_debug_draw, size: u32) -> carom_status;
+    pub fn carom_world_draw(world: *const carom_world, draw: *const carom_debug_draw) -> carom_status;
 
     pub fn carom_scene_load_text(
         world: *mut *mut carom_world,

@@ -373,6 +373,132 @@ impl World {
     }
 }
 
+/// The first body a ray meets ([`World::cast_ray`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RayHit {
+    pub body: carom_body_id,
+    pub point: (f64, f64),
+    pub normal: (f64, f64),
+    pub fraction: f64,
+}
+
+/// What a safe call's count-returning C function said: a count, or minus a status.
+fn count(n: i32) -> Result<usize> {
+    if n < 0 {
+        Err(Error::from_status(-n))
+    } else {
+        Ok(n as usize)
+    }
+}
+
+/// Version 0.2: forces, impulses, filters, queries and events.
+impl World {
+    /// A force at a world point, acting over the next step.
+    pub fn apply_force(&mut self, id: carom_body_id, f: (f64, f64), at: (f64, f64)) -> Result<()> {
+        check(unsafe { carom_body_apply_force(self.as_ptr(), id, f.0, f.1, at.0, at.1) })
+    }
+
+    pub fn apply_torque(&mut self, id: carom_body_id, torque: f64) -> Result<()> {
+        check(unsafe { carom_body_apply_torque(self.as_ptr(), id, torque) })
+    }
+
+    /// An impulse at a world point: the velocity changes at once.
+    pub fn apply_impulse(&mut self, id: carom_body_id, j: (f64, f64), at: (f64, f64)) -> Result<()> {
+        check(unsafe { carom_body_apply_impulse(self.as_ptr(), id, j.0, j.1, at.0, at.1) })
+    }
+
+    pub fn apply_angular_impulse(&mut self, id: carom_body_id, j: f64) -> Result<()> {
+        check(unsafe { carom_body_apply_angular_impulse(self.as_ptr(), id, j) })
+    }
+
+    pub fn clear_forces(&mut self) -> Result<()> {
+        check(unsafe { carom_world_clear_forces(self.as_ptr()) })
+    }
+
+    /// (category, mask, group)
+    pub fn filter(&self, id: carom_body_id) -> Result<(u32, u32, i32)> {
+        let (mut c, mut m, mut g) = (0, 0, 0);
+        check(unsafe { carom_body_get_filter(self.as_ptr(), id, &mut c, &mut m, &mut g) })?;
+        Ok((c, m, g))
+    }
+
+    pub fn set_filter(&mut self, id: carom_body_id, category: u32, mask: u32, group: i32) -> Result<()> {
+        check(unsafe { carom_body_set_filter(self.as_ptr(), id, category, mask, group) })
+    }
+
+    pub fn is_sensor(&self, id: carom_body_id) -> Result<bool> {
+        let mut s = 0;
+        check(unsafe { carom_body_is_sensor(self.as_ptr(), id, &mut s) })?;
+        Ok(s != 0)
+    }
+
+    /// The first body the segment enters, among those whose category & mask is non-zero.
+    pub fn cast_ray(&self, from: (f64, f64), to: (f64, f64), mask: u32) -> Result<Option<RayHit>> {
+        let mut hit = carom_ray_hit::default();
+        check(unsafe { carom_world_cast_ray(self.as_ptr(), from.0, from.1, to.0, to.1, mask, &mut hit) })?;
+        Ok((hit.body != CAROM_NULL_BODY).then_some(RayHit {
+            body: hit.body,
+            point: (hit.x, hit.y),
+            normal: (hit.nx, hit.ny),
+            fraction: hit.fraction,
+        }))
+    }
+
+    fn listed(&self, call: impl Fn(*mut carom_body_id, i32) -> i32) -> Result<Vec<carom_body_id>> {
+        let n = count(call(ptr::null_mut(), 0))?;
+        let mut ids = vec![0; n];
+        let got = count(call(ids.as_mut_ptr(), n as i32))?;
+        ids.truncate(got.min(n));
+        Ok(ids)
+    }
+
+    /// The bodies whose shape contains the point.
+    pub fn query_point(&self, p: (f64, f64), mask: u32) -> Result<Vec<carom_body_id>> {
+        self.listed(|ids, cap| unsafe { carom_world_query_point(self.as_ptr(), p.0, p.1, mask, ids, cap) })
+    }
+
+    /// The bodies whose bounding box overlaps the box from `lo` to `hi`.
+    pub fn query_aabb(&self, lo: (f64, f64), hi: (f64, f64), mask: u32) -> Result<Vec<carom_body_id>> {
+        self.listed(|ids, cap| unsafe { carom_world_query_aabb(self.as_ptr(), lo.0, lo.1, hi.0, hi.1, mask, ids, cap) })
+    }
+
+    /// The events of the last step.
+    pub fn events(&self) -> Result<Vec<carom_contact_event>> {
+        let n = count(unsafe { carom_world_get_events(self.as_ptr(), ptr::null_mut(), 0) })?;
+        let mut ev = vec![carom_contact_event::default(); n];
+        let got = count(unsafe { carom_world_get_events(self.as_ptr(), ev.as_mut_ptr(), n as i32) })?;
+        ev.truncate(got.min(n));
+        Ok(ev)
+    }
+
+    /// Every body's outline (polygons as their vertices, circles as
+    /// centre, radius and angle), through the debug draw.
+    pub fn draw(&self, mut polygon: impl FnMut(carom_body_id, &[[f64; 2]]), mut circle: impl FnMut(carom_body_id, (f64, f64), f64, f64)) -> Result<()> {
+        struct Sink<'a> {
+            polygon: &'a mut dyn FnMut(carom_body_id, &[[f64; 2]]),
+            circle: &'a mut dyn FnMut(carom_body_id, (f64, f64), f64, f64),
+        }
+        unsafe extern "C" fn on_polygon(xy: *const f64, n: i32, body: carom_body_id, user: *mut c_void) {
+            let sink = &mut *(user as *mut Sink);
+            let pts = std::slice::from_raw_parts(xy as *const [f64; 2], n.max(0) as usize);
+            (sink.polygon)(body, pts);
+        }
+        unsafe extern "C" fn on_circle(x: f64, y: f64, r: f64, a: f64, body: carom_body_id, user: *mut c_void) {
+            let sink = &mut *(user as *mut Sink);
+            (sink.circle)(body, (x, y), r, a);
+        }
+        let mut sink = Sink { polygon: &mut polygon, circle: &mut circle };
+        let mut d = std::mem::MaybeUninit::<carom_debug_draw>::zeroed();
+        check(unsafe { carom_debug_draw_init(d.as_mut_ptr(), size_of::<carom_debug_draw>() as u32) })?;
+        let mut d = unsafe { d.assume_init() };
+        d.polygon = Some(on_polygon);
+        d.circle = Some(on_circle);
+        d.user = &mut sink as *mut Sink as *mut c_void;
+        d.draw_contacts = 0;
+        check(unsafe { carom_world_draw(self.as_ptr(), &d) })
+    }
+}
+
 impl Drop for World {
     fn drop(&mut self) {
         // SAFETY: owned, destroyed once.

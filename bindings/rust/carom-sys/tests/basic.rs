@@ -137,3 +137,67 @@ fn scenes_load_and_report_the_line() {
     let err = World::from_scene_file(std::path::Path::new("/nonexistent/x.scene")).unwrap_err();
     assert_eq!(err.status, CAROM_ERR_IO);
 }
+
+#[test]
+fn version_0_2_forces_queries_events_and_draw() {
+    let mut def = safe::world_def();
+    def.gravity_y = -10.0;
+    let mut world = World::with_def(&def).unwrap();
+    let mut g = safe::body_def();
+    g.type_ = CAROM_STATIC;
+    g.y = -0.5;
+    let ground = world.add_box(&g, 10.0, 1.0).unwrap();
+    let mut s = safe::body_def();
+    s.type_ = CAROM_STATIC;
+    s.sensor = 1;
+    s.y = 1.5;
+    let zone = world.add_box(&s, 4.0, 1.0).unwrap();
+    let mut b = safe::body_def();
+    b.y = 3.0;
+    let ball = world.add_circle(&b, 0.25).unwrap();
+    assert!(world.is_sensor(zone).unwrap() && !world.is_sensor(ball).unwrap());
+    // an impulse at the centre: dv = J / m exactly
+    let (m, _, _) = world.mass(ball).unwrap();
+    world.apply_impulse(ball, (0.5, 0.0), (0.0, 3.0)).unwrap();
+    assert!((world.velocity(ball).unwrap().0 - 0.5 / m).abs() < 1e-15);
+    world.set_velocity(ball, 0.0, 0.0).unwrap();
+    assert_eq!(
+        world.apply_force(ground, (1.0, 0.0), (0.0, 0.0)).unwrap_err().status,
+        CAROM_ERR_STATIC_BODY
+    );
+    let mut kinds = Vec::new();
+    for _ in 0..120 {
+        world.step(1.0 / 60.0).unwrap();
+        kinds.extend(world.events().unwrap().iter().map(|e| e.type_));
+    }
+    assert_eq!(
+        kinds,
+        vec![CAROM_EVENT_SENSOR_BEGIN, CAROM_EVENT_SENSOR_END, CAROM_EVENT_CONTACT_BEGIN]
+    );
+    let hit = world.cast_ray((-6.0, -0.25), (5.0, -0.25), !0).unwrap().unwrap();
+    assert_eq!(hit.body, ground);
+    assert!((hit.point.0 + 5.0).abs() < 1e-12 && (hit.fraction - 1.0 / 11.0).abs() < 1e-12);
+    assert!((hit.normal.0 + 1.0).abs() < 1e-12);
+    let hit = world.cast_ray((0.0, 5.0), (0.0, -5.0), 1).unwrap().unwrap();
+    assert_eq!(hit.body, zone); // sensors are hit too
+    assert!((hit.point.1 - 2.0).abs() < 1e-12 && (hit.normal.1 - 1.0).abs() < 1e-12);
+    assert_eq!(world.query_point((0.0, 0.25), !0).unwrap(), vec![ball]);
+    assert_eq!(world.query_aabb((-1.0, -1.0), (1.0, 0.1), !0).unwrap(), vec![ground, ball]);
+    assert_eq!(
+        world.query_aabb((1.0, 0.0), (0.0, 1.0), !0).unwrap_err().status,
+        CAROM_ERR_BAD_ARGUMENT
+    );
+    world.set_filter(ball, 2, 1, -3).unwrap();
+    assert_eq!(world.filter(ball).unwrap(), (2, 1, -3));
+    let (mut polys, mut circles) = (0, 0);
+    world
+        .draw(|_, pts| {
+            assert_eq!(pts.len(), 4);
+            polys += 1
+        }, |_, _, r, _| {
+            assert_eq!(r, 0.25);
+            circles += 1
+        })
+        .unwrap();
+    assert_eq!((polys, circles), (2, 1));
+}

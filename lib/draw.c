@@ -1,0 +1,75 @@
+/* Debug draw (carom_world_draw): the bodies and contacts as the program's
+ * callbacks draw them. */
+#include <string.h>
+
+#include "world.h"
+
+/* 0.2's carom_debug_draw is the first; later ones only grow */
+#define DEBUG_DRAW_SIZE_0_2 sizeof (carom_debug_draw)
+
+carom_status carom_debug_draw_init (carom_debug_draw *draw, uint32_t size)
+{
+  if (!draw)
+    return CAROM_ERR_NULL_ARGUMENT;
+  if (size != DEBUG_DRAW_SIZE_0_2)
+    return CAROM_ERR_BAD_STRUCT_SIZE;
+  memset (draw, 0, size);
+  draw->size = size;
+  draw->draw_bodies = 1;
+  draw->draw_contacts = 1;
+  return CAROM_OK;
+}
+
+static void draw_body (const carom_world *world, int32_t slot, const carom_debug_draw *d, double *xy)
+{
+  const body *b = &world->bodies[slot];
+  carom_body_id id = body_id_of (world, slot);
+  if (b->shape.kind == CAROM_SHAPE_CIRCLE)
+    {
+      if (d->circle)
+        d->circle (b->p.x, b->p.y, b->shape.radius, b->angle, id, d->user);
+    }
+  else if (d->polygon)
+    {
+      xform x;
+      int32_t i;
+      x.p = b->p, x.q = b->q;
+      for (i = 0; i < b->shape.count; ++i)
+        {
+          vec2 v = xform_apply (x, b->shape.vertices[i]);
+          xy[2 * i] = v.x, xy[2 * i + 1] = v.y;
+        }
+      d->polygon (xy, b->shape.count, id, d->user);
+    }
+}
+
+carom_status carom_world_draw (const carom_world *world, const carom_debug_draw *draw)
+{
+  double xy[2 * CAROM_MAX_POLYGON_VERTICES];
+  int32_t i, j;
+  if (!world || !draw)
+    return CAROM_ERR_NULL_ARGUMENT;
+  if (draw->size != DEBUG_DRAW_SIZE_0_2)
+    return CAROM_ERR_BAD_STRUCT_SIZE;
+  if (draw->draw_bodies)
+    for (i = 0; i < world->slot_count; ++i)
+      if (world->bodies[i].alive)
+        draw_body (world, i, draw, xy);
+  if (draw->draw_contacts)
+    for (i = 0; i < world->contacts.count; ++i)
+      {
+        const contact *k = &world->contacts.list[i];
+        const body *a = &world->bodies[k->a], *b = &world->bodies[k->b];
+        double len = 0.2 * (a->shape.size < b->shape.size ? a->shape.size : b->shape.size);
+        for (j = 0; j < k->count; ++j)
+          {
+            const contact_point *p = &k->points[j];
+            if (draw->point)
+              draw->point (p->point.x, p->point.y, draw->user);
+            if (draw->segment)
+              draw->segment (p->point.x, p->point.y, p->point.x + len * p->normal.x, p->point.y + len * p->normal.y,
+                             draw->user);
+          }
+      }
+  return CAROM_OK;
+}

@@ -1,0 +1,203 @@
+/* Contact and sensor events (events.h). */
+#include "events.h"
+
+#include <string.h>
+
+#include "world.h"
+
+void events_destroy (carom_world *world)
+{
+  events *e = &world->events;
+  int k;
+  for (k = 0; k < 2; ++k)
+    mem_free (&world->allocator, e->touches[k], (size_t) e->cap[k] * sizeof (touch));
+  mem_free (&world->allocator, e->table, (size_t) e->table_cap * sizeof (int32_t));
+  mem_free (&world->allocator, e->list, (size_t) e->event_cap * sizeof (carom_contact_event));
+  memset (e, 0, sizeof *e);
+}
+
+/* Open addressing over the last update's pairs: twice their count, a power
+ * of two. */
+static int32_t table_size (int32_t count)
+{
+  int32_t n = 16;
+  while (n < 2 * count)
+    n *= 2;
+  return n;
+}
+
+int events_reserve (carom_world *world)
+{
+  events *e = &world->events;
+  int32_t now = world->contacts.count + world->contacts.sensor_count, last = e->count[e->cur];
+  int32_t fresh = 1 - e->cur, table = table_size (last);
+  return mem_reserve (&world->allocator, (void **) &e->touches[fresh], &e->cap[fresh], now, sizeof (touch))
+         && mem_reserve (&world->allocator, (void **) &e->table, &e->table_cap, table, sizeof (int32_t))
+         && mem_reserve (&world->allocator, (void **) &e->list, &e->event_cap, now + last,
+                         sizeof (carom_contact_event));
+}
+
+static uint32_t pair_hash (carom_body_id a, carom_body_id b, int32_t sensor)
+{
+  uint64_t h = (a ^ (b << 20) ^ (b >> 44) ^ (uint64_t) sensor << 63) * 0x9e3779b97f4a7c15ull;
+  return (uint32_t) (h >> 32);
+}
+
+static int32_t find (const events *e, const touch *old, int32_t mask, const touch *t)
+{
+  uint32_t i = pair_hash (t->a, t->b, t->sensor) & (uint32_t) mask;
+  for (;; i = (i + 1) & (uint32_t) mask)
+    {
+      int32_t k = e->table[i];
+      if (k < 0)
+        return -1;
+      if (old[k].a == t->a && old[k].b == t->b && old[k].sensor == t->sensor)
+        return k;
+    }
+}
+
+static int point_touches (const contact_point *p)
+{
+  return p->depth >= 0.0 || p->total_impulse > 0.0;
+}
+
+/* The contacts of one pair of bodies are consecutive in the list (one
+ * broad-phase pair gives all of its pieces' contacts): they touch when
+ * some point overlaps or received impulse in the update. */
+static int32_t contact_touches (const carom_world *world, touch *out)
+{
+  const contacts *c = &world->contacts;
+  int32_t i = 0, n = 0;
+  while (i < c->count)
+    {
+      int32_t a = c->list[i].a, b = c->list[i].b, first = i, j;
+      const contact_point *found = NULL;
+      for (; i < c->count && c->list[i].a == a && c->list[i].b == b; ++i)
+        for (j = 0; j < c->list[i].count && !found; ++j)
+          if (point_touches (&c->list[i].points[j]))
+            found = &c->list[i].points[j];
+      if (!found)
+        continue;
+      out[n].a = body_slot_id (&world->bodies[a], a);
+      out[n].b = body_slot_id (&world->bodies[b], b);
+      out[n].x = found->point.x, out[n].y = found->point.y;
+      out[n].first = first;
+      out[n].sensor = out[n].seen = 0;
+      ++n;
+    }
+  return n;
+}
+
+/* A begin event: what the pair's contacts say about the update. */
+static void emit_begin (events *e, const carom_world *world, const touch *t)
+{
+  const contacts *c = &world->contacts;
+  carom_contact_event *v = &e->list[e->event_count++];
+  int32_t i, j, a, b;
+  int first = 1;
+  memset (v, 0, sizeof *v); /* no stray padding bytes reach the caller */
+  v->type = t->sensor ? CAROM_EVENT_SENSOR_BEGIN : CAROM_EVENT_CONTACT_BEGIN;
+  v->a = t->a, v->b = t->b;
+  v->x = t->x, v->y = t->y;
+  if (t->sensor)
+    return;
+  a = c->list[t->first].a, b = c->list[t->first].b;
+  for (i = t->first; i < c->count && c->list[i].a == a && c->list[i].b == b; ++i)
+    for (j = 0; j < c->list[i].count; ++j)
+      {
+        const contact_point *p = &c->list[i].points[j];
+        if (!point_touches (p))
+          continue;
+        if (first)
+          v->nx = p->normal.x, v->ny = p->normal.y, first = 0;
+        v->approach_speed = -p->approach > v->approach_speed ? -p->approach : v->approach_speed;
+        v->normal_impulse += p->total_impulse;
+      }
+}
+
+static void emit_end (events *e, const touch *t)
+{
+  carom_contact_event *v = &e->list[e->event_count++];
+  memset (v, 0, sizeof *v);
+  v->type = t->sensor ? CAROM_EVENT_SENSOR_END : CAROM_EVENT_CONTACT_END;
+  v->a = t->a, v->b = t->b;
+  v->x = t->x, v->y = t->y;
+}
+
+/* The same pairs in the same order as the last update: the common case of
+ * a steady scene, which needs no table and makes no event. */
+static int same_pairs (const touch *old, int32_t old_count, const touch *cur, int32_t n)
+{
+  int32_t i;
+  if (old_count != n)
+    return 0;
+  for (i = 0; i < n; ++i)
+    if (old[i].a != cur[i].a || old[i].b != cur[i].b || old[i].sensor != cur[i].sensor)
+      return 0;
+  return 1;
+}
+
+void events_update (carom_world *world)
+{
+  events *e = &world->events;
+  const contacts *c = &world->contacts;
+  int32_t last = e->cur, now = 1 - e->cur, mask = table_size (e->count[last]) - 1, i, n;
+  touch *old = e->touches[last], *cur = e->touches[now];
+  n = contact_touches (world, cur);
+  for (i = 0; i < c->sensor_count; ++i)
+    {
+      const body *v = &world->bodies[c->sensors[2 * i + 1]];
+      touch *t;
+      if (!contact_bodies_overlap (&world->bodies[c->sensors[2 * i]], v))
+        continue;
+      t = &cur[n++];
+      t->a = body_id_of (world, c->sensors[2 * i]);
+      t->b = body_id_of (world, c->sensors[2 * i + 1]);
+      t->x = v->p.x, t->y = v->p.y;
+      t->first = -1;
+      t->sensor = 1;
+      t->seen = 0;
+    }
+  e->count[now] = n;
+  e->event_count = 0;
+  e->cur = now;
+  if (same_pairs (old, e->count[last], cur, n))
+    return;
+  for (i = 0; i <= mask; ++i)
+    e->table[i] = -1;
+  for (i = 0; i < e->count[last]; ++i)
+    {
+      uint32_t h = pair_hash (old[i].a, old[i].b, old[i].sensor) & (uint32_t) mask;
+      while (e->table[h] >= 0)
+        h = (h + 1) & (uint32_t) mask;
+      e->table[h] = i;
+      old[i].seen = 0;
+    }
+  for (i = 0; i < n; ++i)
+    {
+      int32_t k = find (e, old, mask, &cur[i]);
+      if (k >= 0)
+        old[k].seen = 1;
+      else
+        emit_begin (e, world, &cur[i]);
+    }
+  for (i = 0; i < e->count[last]; ++i)
+    if (!old[i].seen)
+      emit_end (e, &old[i]);
+}
+
+int32_t carom_world_get_events (const carom_world *world, carom_contact_event *list, int32_t capacity)
+{
+  const events *e;
+  int32_t i;
+  if (!world)
+    return -(int32_t) CAROM_ERR_NULL_ARGUMENT;
+  if (capacity < 0)
+    return -(int32_t) CAROM_ERR_BAD_ARGUMENT;
+  if (!list && capacity > 0)
+    return -(int32_t) CAROM_ERR_NULL_ARGUMENT;
+  e = &world->events;
+  for (i = 0; i < e->event_count && i < capacity; ++i)
+    list[i] = e->list[i];
+  return e->event_count;
+}
