@@ -1,6 +1,6 @@
-/* Mouse grab: picking by point-in-polygon (even-odd, so concave outlines
- * work) or distance to a circle's centre, and throwing with the pointer's
- * smoothed velocity. */
+/* Mouse grab: picking with the library's point query (the true outline, so
+ * concave polygons work), and throwing with the pointer's smoothed
+ * velocity. */
 #include "grab.h"
 
 #include <math.h>
@@ -16,61 +16,27 @@ void grab_init (grab *g)
   g->max_speed = HUGE_VAL;
 }
 
-static int grab_inside_polygon (const double *xy, int32_t n, double x, double y)
-{
-  int32_t i, j;
-  int inside = 0;
-  for (i = 0, j = n - 1; i < n; j = i++)
-    {
-      double xi = xy[2 * i], yi = xy[2 * i + 1], xj = xy[2 * j], yj = xy[2 * j + 1];
-      if ((yi > y) != (yj > y) && x < xj + (y - yj) * (xi - xj) / (yi - yj))
-        inside = !inside;
-    }
-  return inside;
-}
-
-static int grab_hits (const carom_world *world, carom_body_id id, double x, double y, double **xy, int32_t *cap)
-{
-  int32_t n = 0;
-  if (carom_body_get_vertices (world, id, NULL, 0, &n) != CAROM_OK)
-    return 0;
-  if (n == 0)
-    {
-      double cx, cy, r = 0.0;
-      carom_body_get_position (world, id, &cx, &cy);
-      carom_body_get_shape (world, id, NULL, &r);
-      return hypot (x - cx, y - cy) <= r;
-    }
-  if (n > *cap)
-    {
-      double *grown = realloc (*xy, 2 * (size_t) n * sizeof **xy);
-      if (!grown)
-        return 0;
-      *xy = grown;
-      *cap = n;
-    }
-  carom_body_get_vertices (world, id, *xy, *cap, &n);
-  return grab_inside_polygon (*xy, n, x, y);
-}
-
 carom_body_id grab_pick (const carom_world *world, double x, double y)
 {
   carom_body_id *ids, found = CAROM_NULL_BODY;
-  double *xy = NULL;
-  int32_t n = carom_world_get_bodies (world, NULL, 0), i, cap = 0;
-  ids = malloc (((size_t) n + 1) * sizeof *ids);
+  /* the bodies whose true outline contains the point (the library's point
+   * query), in creation order: the last drawn is on top */
+  int32_t n = carom_world_query_point (world, x, y, 0xffffffffu, NULL, 0), i;
+  if (n <= 0)
+    return CAROM_NULL_BODY;
+  ids = malloc ((size_t) n * sizeof *ids);
   if (!ids)
     return CAROM_NULL_BODY;
-  n = carom_world_get_bodies (world, ids, n);
-  /* the last drawn is on top */
+  n = carom_world_query_point (world, x, y, 0xffffffffu, ids, n);
   for (i = n - 1; i >= 0 && found == CAROM_NULL_BODY; --i)
     {
       carom_body_type type = CAROM_STATIC;
+      int32_t sensor = 0;
       carom_body_get_type (world, ids[i], &type);
-      if (type == CAROM_DYNAMIC && grab_hits (world, ids[i], x, y, &xy, &cap))
+      carom_body_is_sensor (world, ids[i], &sensor);
+      if (type == CAROM_DYNAMIC && !sensor)
         found = ids[i];
     }
-  free (xy);
   free (ids);
   return found;
 }

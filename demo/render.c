@@ -284,19 +284,38 @@ static void render_body (cairo_t *cr, const render_options *opt, const carom_wor
 {
   carom_body_type type = CAROM_DYNAMIC;
   carom_shape_kind kind = CAROM_SHAPE_POLYGON;
+  int32_t sensor = 0, i;
+  int lit = 0;
   rgb fill;
   carom_body_get_type (world, id, &type);
   carom_body_get_shape (world, id, &kind, NULL);
   if (!render_body_path (cr, opt, world, id, xy, cap, scale))
     return;
   fill = render_body_colour (id);
-  if (type == CAROM_STATIC)
+  carom_body_is_sensor (world, id, &sensor);
+  for (i = 0; i < opt->lit_count; ++i)
+    lit |= opt->lit[i] == id;
+  if (sensor)
+    {
+      /* a sensor: a pale zone, bright while something is inside */
+      if (lit)
+        cairo_set_source_rgba (cr, 1.0, 0.85, 0.2, 0.55);
+      else
+        cairo_set_source_rgba (cr, 0.55, 0.8, 0.6, 0.25);
+    }
+  else if (type == CAROM_STATIC)
     cairo_set_source_rgb (cr, 0.66, 0.66, 0.68);
+  else if (type == CAROM_KINEMATIC)
+    cairo_set_source_rgb (cr, 0.45, 0.55, 0.75);
   else
     cairo_set_source_rgba (cr, fill.r, fill.g, fill.b, 0.92);
   cairo_fill_preserve (cr);
-  if (type == CAROM_STATIC)
+  if (sensor)
+    cairo_set_source_rgba (cr, 0.2, 0.5, 0.3, 0.8);
+  else if (type == CAROM_STATIC)
     cairo_set_source_rgb (cr, 0.38, 0.38, 0.40);
+  else if (type == CAROM_KINEMATIC)
+    cairo_set_source_rgb (cr, 0.2, 0.25, 0.4);
   else
     cairo_set_source_rgb (cr, 0.35 * fill.r, 0.35 * fill.g, 0.35 * fill.b);
   cairo_set_line_width (cr, line);
@@ -564,7 +583,7 @@ void render_world (cairo_t *cr, const carom_world *world, const render_options *
     {
       carom_body_type type = CAROM_DYNAMIC;
       carom_body_get_type (world, ids[i], &type);
-      if (type == CAROM_DYNAMIC)
+      if (type != CAROM_STATIC)
         render_body (cr, opt, world, ids[i], &xy, &cap, scale, line);
     }
   if (opt->highlight_body_valid)

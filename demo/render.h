@@ -18,6 +18,8 @@ typedef struct render_options {
   int show_restitution;     /* restitution bar */
   int highlight_body_valid; /* draw `highlight` body outlined (mouse grab) */
   carom_body_id highlight;
+  const carom_body_id *lit; /* sensors drawn lit: something is inside */
+  int lit_count;
 } render_options;
 
 /* Defaults: everything fitted to the world's bodies, centroids and contacts

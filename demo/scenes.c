@@ -13,6 +13,29 @@
 #define DEMO_SCENE_DIR "scenes"
 #endif
 
+/* The platform scene's motor: its kinematic bodies turn back at the ends of
+ * their run, then the world steps. */
+#define PLATFORM_RUN 4.5
+
+static carom_status platform_update (stage *s, double dt)
+{
+  carom_body_id ids[64];
+  int32_t n = carom_world_get_bodies (s->world, ids, 64), i;
+  for (i = 0; i < n && i < 64; ++i)
+    {
+      carom_body_type type = CAROM_DYNAMIC;
+      double x, y, vx, vy;
+      carom_body_get_type (s->world, ids[i], &type);
+      if (type != CAROM_KINEMATIC)
+        continue;
+      carom_body_get_position (s->world, ids[i], &x, &y);
+      carom_body_get_velocity (s->world, ids[i], &vx, &vy);
+      if ((x > PLATFORM_RUN && vx > 0.0) || (x < -PLATFORM_RUN && vx < 0.0))
+        carom_body_set_velocity (s->world, ids[i], -vx, vy);
+    }
+  return stage_update (s, dt);
+}
+
 static const scene_entry scenes_table[] = {
   { "thesis", "thesis.scene", "the thesis' polygons in a closed box", stage_init, stage_update, stage_draw,
     stage_destroy },
@@ -24,6 +47,8 @@ static const scene_entry scenes_table[] = {
     stage_destroy },
   { "gas", "gas.scene", "500 polygons bouncing without gravity", stage_init, stage_update, stage_draw,
     stage_destroy },
+  { "platform", "platform.scene", "a kinematic platform carries boxes; a sensor lights up", stage_init,
+    platform_update, stage_draw, stage_destroy },
 };
 
 static const scene_entry scenes_user = {

@@ -122,17 +122,52 @@ carom_status stage_init (stage *s, const char *path, char *message, size_t size)
   return CAROM_OK;
 }
 
+/* The sensor events of the last update: how many bodies are inside each
+ * sensor. */
+static void stage_follow_sensors (stage *s)
+{
+  carom_contact_event ev[64];
+  int32_t n = carom_world_get_events (s->world, ev, 64), i, k;
+  for (i = 0; i < n && i < 64; ++i)
+    {
+      int d = ev[i].type == CAROM_EVENT_SENSOR_BEGIN ? 1 : ev[i].type == CAROM_EVENT_SENSOR_END ? -1 : 0;
+      if (d == 0)
+        continue;
+      for (k = 0; k < s->sensor_count && s->sensors[k] != ev[i].a; ++k)
+        ;
+      if (k == s->sensor_count)
+        {
+          if (k == STAGE_MAX_SENSORS)
+            continue;
+          s->sensors[k] = ev[i].a;
+          s->inside[k] = 0;
+          s->sensor_count++;
+        }
+      s->inside[k] += d;
+    }
+}
+
 carom_status stage_update (stage *s, double dt)
 {
   gint64 start = g_get_monotonic_time ();
   carom_status st = carom_world_update (s->world, dt);
   s->step_ms = 1e-3 * (double) (g_get_monotonic_time () - start);
+  if (st == CAROM_OK)
+    stage_follow_sensors (s);
   return st;
 }
 
 void stage_draw (const stage *s, cairo_t *cr, const render_options *opt)
 {
-  render_world (cr, s->world, opt);
+  render_options o = *opt;
+  carom_body_id lit[STAGE_MAX_SENSORS];
+  int32_t k;
+  o.lit = lit;
+  o.lit_count = 0;
+  for (k = 0; k < s->sensor_count; ++k)
+    if (s->inside[k] > 0)
+      lit[o.lit_count++] = s->sensors[k];
+  render_world (cr, s->world, &o);
 }
 
 void stage_destroy (stage *s)

@@ -12,6 +12,9 @@
 #include "render.h"
 #include "walls.h"
 
+/* Sensors whose overlaps the stage follows (to light them up). */
+#define STAGE_MAX_SENSORS 16
+
 typedef struct stage {
   char *path;            /* the scene file */
   carom_world *world;
@@ -20,6 +23,10 @@ typedef struct stage {
                             since */
   walls walls;           /* the `bounds` walls, if the file has them */
   double step_ms;        /* wall-clock time of the last update */
+  /* sensors and how many bodies overlap each, from the events */
+  carom_body_id sensors[STAGE_MAX_SENSORS];
+  int32_t inside[STAGE_MAX_SENSORS];
+  int32_t sensor_count;
 } stage;
 
 /* Read and load a scene file. On failure the stage is empty, and `message`

@@ -50,7 +50,8 @@ check-demo:
 # 800x600 window of a private X server, then cut to a 256-colour palette
 # (the busy scenes are 230 KB as true colour, 60-80 KB so).
 DEMO_SHOTS := "thesis --frames 50 --keys vg" "balls --frames 120 --keys v" "pyramid --frames 180" \
-              "rain --frames 150" "gas --frames 120" "help --paused --frames 2 --keys h thesis"
+              "rain --frames 150" "gas --frames 120" "platform --frames 310" \
+              "help --paused --frames 2 --keys h thesis"
 
 demo-shots: $(DEMO_BIN)
 	@tools/ensure-deps xtest
