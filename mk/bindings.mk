@@ -1,6 +1,8 @@
 # Language bindings (docs/bindings.md), tested on the shared library of
 # $(BUILD):
-#   make check-python    pytest on bindings/python/tests (ctypes, CAROM_LIBRARY)
+#   make check-python    pytest on the installed package (pip install of
+#                        bindings/python and of its sdist, in fresh venvs),
+#                        then on the checkout with CAROM_LIBRARY
 #   make check-rust      cargo test in bindings/rust/carom-sys (CAROM_LIB_DIR);
 #                        skipped (and counted as skipped) when cargo is
 #                        missing; under CI a missing cargo fails
@@ -16,11 +18,31 @@ BINDINGS_LIB_DIR := $(abspath $(BUILD))
 
 .PHONY: check-python check-rust check-bindings
 
+# The installed package, twice, each in a fresh venv, tested from outside
+# the source tree: the wheel pip builds from bindings/python (the C library
+# compiled into it), and the one it builds from the sdist that
+# `python -m build` makes (the C sources travel in it). No CAROM_LIBRARY:
+# the package loads its own copy. Then the checkout's package on the build
+# tree's library (CAROM_LIBRARY), as a developer runs it.
+PY_DIR := $(abspath $(BUILD))/python
 check-python: $(BUILD)/libcarom.so
-	@$(PYTHON) -m pytest --version >/dev/null 2>&1 || $(PYTHON) -m pip install --quiet pytest \
-	  || tools/ensure-deps python
+	@rm -rf $(PY_DIR) && mkdir -p $(PY_DIR)/run
+	$(PYTHON) -m venv $(PY_DIR)/venv
+	$(PY_DIR)/venv/bin/python -m pip install --quiet --upgrade pip setuptools wheel build pytest \
+	  || { echo "check-python: cannot install pip, setuptools, build, pytest from PyPI"; \
+	       echo "check-python: 0 passed, 1 failed"; exit 1; }
+	cd $(PY_DIR)/run && $(PY_DIR)/venv/bin/python -m pip install --quiet $(abspath bindings/python)
+	cd $(PY_DIR)/run && CAROM_TEST_INSTALLED=1 PYTHONDONTWRITEBYTECODE=1 \
+	  $(PY_DIR)/venv/bin/python -m pytest -p no:cacheprovider -q $(abspath bindings/python/tests)
+	$(PY_DIR)/venv/bin/python -m build --sdist --no-isolation --outdir $(PY_DIR)/dist bindings/python >/dev/null
+	$(PYTHON) -m venv $(PY_DIR)/venv-sdist
+	$(PY_DIR)/venv-sdist/bin/python -m pip install --quiet --upgrade pip setuptools pytest
+	cd $(PY_DIR)/run && $(PY_DIR)/venv-sdist/bin/python -m pip install --quiet $(PY_DIR)/dist/carom-*.tar.gz
+	cd $(PY_DIR)/run && CAROM_TEST_INSTALLED=1 PYTHONDONTWRITEBYTECODE=1 \
+	  $(PY_DIR)/venv-sdist/bin/python -m pytest -p no:cacheprovider -q $(abspath bindings/python/tests)
 	CAROM_LIBRARY=$(BINDINGS_LIB_DIR)/$(SONAME) PYTHONDONTWRITEBYTECODE=1 \
-	  $(PYTHON) -m pytest -p no:cacheprovider -q bindings/python/tests
+	  $(PY_DIR)/venv/bin/python -m pytest -p no:cacheprovider -q bindings/python/tests
+	@rm -rf bindings/python/build bindings/python/carom.egg-info
 
 # The crate's target directory lives in $(BUILD), not in the source tree.
 # --locked: Cargo.lock is committed and must not change.

@@ -6,6 +6,7 @@ Only the layer in carom/__init__.py should use this module directly.
 
 import ctypes
 import ctypes.util
+import glob
 import os
 import sys
 
@@ -253,13 +254,23 @@ PROTOTYPES = {
 
 # ------------------------------------------------------------------ loading
 
+def _own_copies():
+    """The library built into this package (setup.py), if any."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    found = []
+    for pattern in ("_libcarom*.so", "_libcarom*.dylib", "_libcarom*.pyd"):
+        found.extend(sorted(glob.glob(os.path.join(here, pattern))))
+    return found
+
+
 def _candidates():
     """Where to look for the library, in order (see docs/bindings.md)."""
     path = os.environ.get(LIBRARY_ENV)
     if path:
         # An explicit choice: no silent fallback to another copy.
         return [path], True
-    names = []
+    # The package's own copy first: the one this binding was built with.
+    names = _own_copies()
     if sys.platform == "darwin":
         soname, plain = "libcarom.%d.dylib" % EXPECTED_MAJOR, "libcarom.dylib"
     elif sys.platform.startswith("win"):
@@ -291,8 +302,9 @@ def _load():
     if explicit:
         raise ImportError("carom: cannot load %s=%s (%s)" % (LIBRARY_ENV, names[0], errors[0]))
     raise ImportError(
-        "carom: cannot find the carom shared library (libcarom.so.%d). Install it "
-        "(make install), or set %s to its full path, e.g. "
+        "carom: this package has no built-in copy of the carom C library, and none was "
+        "found (libcarom.so.%d). Install the package with pip (it builds the library), "
+        "install the library (make install), or set %s to its full path, e.g. "
         "%s=/path/to/build/libcarom.so.%d" % (EXPECTED_MAJOR, LIBRARY_ENV, LIBRARY_ENV, EXPECTED_MAJOR))
 
 

@@ -26,6 +26,17 @@ bounds -5 0 5 10
 
 # ------------------------------------------------------------- the binding
 
+@pytest.mark.skipif(not os.environ.get("CAROM_TEST_INSTALLED"), reason="not the installed wheel")
+def test_the_installed_package_loads_its_own_library():
+    # pip built the C library into the package: nothing else is needed
+    here = os.path.dirname(os.path.abspath(carom.__file__))
+    assert os.path.dirname(os.path.abspath(carom.library_path)) == here
+    assert os.path.basename(carom.library_path).startswith("_libcarom")
+    assert not os.path.abspath(carom.__file__).startswith(os.path.abspath(
+        os.path.join(os.path.dirname(__file__), os.pardir)) + os.sep)
+    assert carom.__version__ == "%d.%d.%d" % carom.library_version
+
+
 def test_library_major_version_matches():
     assert carom.library_version[0] == _native.EXPECTED_MAJOR
     assert _native.lib.carom_version() == (
