@@ -3,7 +3,9 @@
 #   make check-python    pytest on the installed package (pip install of
 #                        bindings/python and of its sdist, in fresh venvs),
 #                        then on the checkout with CAROM_LIBRARY
-#   make check-rust      cargo test in bindings/rust/carom-sys (CAROM_LIB_DIR);
+#   make check-rust      cargo test in bindings/rust/carom-sys: bundled (no
+#                        environment, no prior make), then the system
+#                        feature on a staged install (pkg-config);
 #                        skipped (and counted as skipped) when cargo is
 #                        missing; under CI a missing cargo fails
 #   make check-bindings  check-abi, check-install, check-python, check-rust,
@@ -45,7 +47,11 @@ check-python: $(BUILD)/libcarom.so
 	@rm -rf bindings/python/build bindings/python/carom.egg-info
 
 # The crate's target directory lives in $(BUILD), not in the source tree.
-# --locked: Cargo.lock is committed and must not change.
+# --locked: Cargo.lock is committed and must not change. First as a user
+# runs it: no environment variables, no prior make (the `bundled` feature
+# builds the C sources in); then the `system` feature against a staged
+# install found through pkg-config.
+RUST_STAGE := $(abspath $(BUILD))/rust-stage
 check-rust: $(BUILD)/libcarom.so
 	@if ! command -v $(CARGO) >/dev/null 2>&1; then \
 	  if [ -n "$${CI:-}" ]; then echo "check-rust: cargo not found: the Rust binding cannot be tested"; \
@@ -53,10 +59,14 @@ check-rust: $(BUILD)/libcarom.so
 	  echo "check-rust: cargo not found, Rust binding not tested (install Rust: rustup, or apt-get install cargo)"; \
 	  echo "check-rust: 0 passed, 0 failed, 1 skipped"; exit 0; fi; \
 	set -x; \
-	CAROM_LIB_DIR=$(BINDINGS_LIB_DIR) \
-	LD_LIBRARY_PATH=$(BINDINGS_LIB_DIR)$${LD_LIBRARY_PATH:+:$$LD_LIBRARY_PATH} \
-	CARGO_TARGET_DIR=$(BINDINGS_LIB_DIR)/rust \
-	$(CARGO) test --locked --manifest-path bindings/rust/carom-sys/Cargo.toml
+	env -u CAROM_LIB_DIR -u CAROM_STATIC CARGO_TARGET_DIR=$(BINDINGS_LIB_DIR)/rust \
+	  $(CARGO) test --locked --manifest-path bindings/rust/carom-sys/Cargo.toml && \
+	rm -rf $(RUST_STAGE) && \
+	$(MAKE) --no-print-directory BUILD=$(BUILD) install DESTDIR=$(RUST_STAGE) PREFIX=/usr >/dev/null && \
+	env -u CAROM_LIB_DIR PKG_CONFIG_PATH=$(RUST_STAGE)/usr/lib/pkgconfig PKG_CONFIG_SYSROOT_DIR=$(RUST_STAGE) \
+	  LD_LIBRARY_PATH=$(RUST_STAGE)/usr/lib CARGO_TARGET_DIR=$(BINDINGS_LIB_DIR)/rust-system \
+	  $(CARGO) test --locked --no-default-features --features system \
+	  --manifest-path bindings/rust/carom-sys/Cargo.toml
 
 # One after the other: the scripts build into $(BUILD) themselves.
 check-bindings:

@@ -1,5 +1,7 @@
-//! Hand-written declarations of carom's C ABI (`include/carom.h`, version
-//! 0.x), and a small safe wrapper in [`safe`].
+//! Declarations of carom's C ABI (`include/carom.h`, version 0.x), checked
+//! against the header by `tools/check-ffi`, the C library itself (built in
+//! by the default `bundled` feature, or an installed one with `system`),
+//! and a small safe wrapper in [`safe`].
 //!
 //! The raw items keep their C names. C enums are `c_int` type aliases with
 //! constants: a library newer than this crate may return a value the crate
