@@ -19,8 +19,12 @@ LDLIBS_LIB := -lm
 # compiler and optimisation level, make check-determinism).
 LIB_FP  := -ffp-contract=off
 
-VERSION_MAJOR := 0
-VERSION       := 0.2.0
+# The version lives in one place, include/carom.h's CAROM_VERSION_* macros;
+# the Python package reads it there too (setup.py), and tools/check-version
+# (make check) compares Cargo.toml, Cargo.lock and the bindings' constants.
+carom_version_part = $(shell sed -n 's/^\#define CAROM_VERSION_$(1) \([0-9][0-9]*\).*/\1/p' include/carom.h)
+VERSION_MAJOR := $(call carom_version_part,MAJOR)
+VERSION       := $(VERSION_MAJOR).$(call carom_version_part,MINOR).$(call carom_version_part,PATCH)
 SONAME  := libcarom.so.$(VERSION_MAJOR)
 SO_REAL := $(BUILD)/libcarom.so.$(VERSION)
 
@@ -106,6 +110,7 @@ check: deps-check
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-readme $(BUILD) || rc=1; }; \
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-exports $(BUILD) || rc=1; }; \
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-api-doc || rc=1; }; \
+	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-version || rc=1; }; \
 	for part in $(CHECK_PARTS); do \
 	  [ $$rc -eq 0 ] || break; \
 	  tools/check-part $(CHECK_LOG) $(MAKE) --no-print-directory $$part || { rc=1; echo "check: $$part FAILED"; }; \
@@ -120,3 +125,8 @@ clean:
 # Each part of the project beyond the library and its tests (runner, demo,
 # benchmarks, bindings, ...) keeps its rules in a fragment of its own.
 include $(sort $(wildcard mk/*.mk))
+
+# tools/check-version reads the version the Makefile computes.
+.PHONY: print-version
+print-version:
+	@echo $(VERSION)
