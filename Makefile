@@ -111,6 +111,7 @@ check: deps-check
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-exports $(BUILD) || rc=1; }; \
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-api-doc || rc=1; }; \
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-version || rc=1; }; \
+	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-ffi $(BUILD) || rc=1; }; \
 	for part in $(CHECK_PARTS); do \
 	  [ $$rc -eq 0 ] || break; \
 	  tools/check-part $(CHECK_LOG) $(MAKE) --no-print-directory $$part || { rc=1; echo "check: $$part FAILED"; }; \

@@ -93,6 +93,17 @@ pub const CAROM_EVENT_CONTACT_END: carom_event_type = 1;
 pub const CAROM_EVENT_SENSOR_BEGIN: carom_event_type = 2;
 pub const CAROM_EVENT_SENSOR_END: carom_event_type = 3;
 
+/// The effects (bits of `carom_world_get_effects`).
+pub type carom_effect = c_int;
+pub const CAROM_EFFECT_GRAVITY: carom_effect = 1 << 0;
+pub const CAROM_EFFECT_CENTRAL_GRAVITY: carom_effect = 1 << 1;
+pub const CAROM_EFFECT_RESTITUTION: carom_effect = 1 << 2;
+pub const CAROM_EFFECT_FRICTION: carom_effect = 1 << 3;
+pub const CAROM_EFFECT_FIXED_ROTATION: carom_effect = 1 << 4;
+pub const CAROM_EFFECT_DAMPING: carom_effect = 1 << 5;
+pub const CAROM_EFFECT_SLEEPING: carom_effect = 1 << 6;
+pub const CAROM_EFFECT_CONTINUOUS: carom_effect = 1 << 7;
+
 pub type carom_shape_kind = c_int;
 pub const CAROM_SHAPE_CIRCLE: carom_shape_kind = 0;
 pub const CAROM_SHAPE_POLYGON: carom_shape_kind = 1;
@@ -273,7 +284,7 @@ extern "C" {
     ) -> carom_status;
     pub fn carom_world_remove_body(world: *mut carom_world, id: carom_body_id) -> carom_status;
     pub fn carom_world_get_effects(world: *const carom_world) -> u32;
-    pub fn carom_effect_name(effect: c_int) -> *const c_char;
+    pub fn carom_effect_name(effect: carom_effect) -> *const c_char;
     pub fn carom_world_set_restitution(world: *mut carom_world, restitution: f64) -> carom_status;
     pub fn carom_world_set_friction(world: *mut carom_world, friction: f64) -> carom_status;
     pub fn carom_world_set_central_gravity(world: *mut carom_world, x: f64, y: f64, gm: f64, softening: f64) -> carom_status;
