@@ -28,6 +28,7 @@ BINDINGS_LIB_DIR := $(abspath $(BUILD))
 # tree's library (CAROM_LIBRARY), as a developer runs it.
 PY_DIR := $(abspath $(BUILD))/python
 check-python: $(BUILD)/libcarom.so
+	@tools/ensure-deps python
 	@rm -rf $(PY_DIR) && mkdir -p $(PY_DIR)/run
 	$(PYTHON) -m venv $(PY_DIR)/venv
 	$(PY_DIR)/venv/bin/python -m pip install --quiet --upgrade pip setuptools wheel build pytest \

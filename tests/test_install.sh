@@ -21,14 +21,14 @@ finish () {
   exit
 }
 
-tools/ensure-deps build
+tools/ensure-deps build cmake
 
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/carom-install.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 trap 'exit 130' INT TERM
 root="$tmp/root"
-version=$(sed -n 's/^VERSION *:= *//p' Makefile)
-major=$(sed -n 's/^VERSION_MAJOR *:= *//p' Makefile)
+version=$($MAKE -s --no-print-directory print-version)
+major=${version%%.*}
 libdir="$root/usr/lib"
 
 # ---------------------------------------------------------------- install
@@ -41,10 +41,13 @@ else
 fi
 
 missing=""
-for f in usr/include/carom.h usr/lib/libcarom.so.$version usr/lib/libcarom.a usr/lib/pkgconfig/carom.pc; do
+for f in usr/include/carom.h usr/lib/libcarom.so.$version usr/lib/libcarom.a usr/lib/pkgconfig/carom.pc \
+  usr/lib/cmake/carom/carom-config.cmake usr/lib/cmake/carom/carom-config-version.cmake \
+  usr/share/carom/scenes/thesis.scene; do
   [ -f "$root/$f" ] || missing="$missing $f"
 done
-if [ -z "$missing" ]; then ok "header, shared and static library, carom.pc installed"
+if pkg-config --exists cairo 2>/dev/null && [ ! -x "$root/usr/bin/carom" ]; then missing="$missing usr/bin/carom"; fi
+if [ -z "$missing" ]; then ok "header, shared and static library, carom.pc, the CMake package, the scenes and the runner installed"
 else bad "installed files missing:$missing"; fi
 
 if [ -L "$libdir/libcarom.so.$major" ] && [ "$(readlink "$libdir/libcarom.so.$major")" = "libcarom.so.$version" ] \
@@ -106,6 +109,40 @@ if $CC -std=c99 -o "$tmp/smoke-static" tests/install_smoke.c $sflags >"$tmp/cc-s
 else
   sed 's/^/    /' "$tmp/cc-static.log"
   bad "linked statically with libcarom.a ($sflags), it runs"
+fi
+
+# ----------------------------------------------------------------- CMake
+# find_package(carom) against the staged install: both imported targets.
+if cmake -S tests/cmake/find -B "$tmp/cmake-find" -DCMAKE_PREFIX_PATH="$root/usr" \
+     -DSMOKE_SOURCE="$PWD/tests/install_smoke.c" >"$tmp/cmake.log" 2>&1 \
+   && cmake --build "$tmp/cmake-find" >>"$tmp/cmake.log" 2>&1 \
+   && LD_LIBRARY_PATH="$libdir" "$tmp/cmake-find/smoke" | grep -qx 'position 0.000000 5.000000' \
+   && "$tmp/cmake-find/smoke_static" | grep -qx 'position 0.000000 5.000000' \
+   && readelf -d "$tmp/cmake-find/smoke" | grep -q "NEEDED.*libcarom.so.$major"; then
+  ok "find_package(carom) and target_link_libraries(app carom::carom / carom::carom_static): built, they run"
+else
+  sed 's/^/    /' "$tmp/cmake.log"
+  bad "find_package(carom) and carom::carom against the staged install"
+fi
+# the version file refuses another major version
+printf 'cmake_minimum_required(VERSION 3.13)\nproject(m C)\nfind_package(carom %s REQUIRED)\n' "$((major + 1)).0" \
+  >"$tmp/major.cmake"
+mkdir -p "$tmp/major-src" && cp "$tmp/major.cmake" "$tmp/major-src/CMakeLists.txt"
+if ! cmake -S "$tmp/major-src" -B "$tmp/cmake-major2" -DCMAKE_PREFIX_PATH="$root/usr" >"$tmp/major.log" 2>&1 \
+   && grep -q 'considered but not accepted' "$tmp/major.log"; then
+  ok "find_package(carom $((major + 1)).0) is refused by the version file"
+else
+  bad "find_package(carom $((major + 1)).0) was accepted"
+fi
+# add_subdirectory of the source tree
+if cmake -S tests/cmake/subdir -B "$tmp/cmake-sub" -DCAROM_SOURCE="$PWD" \
+     -DSMOKE_SOURCE="$PWD/tests/install_smoke.c" >"$tmp/cmake-sub.log" 2>&1 \
+   && cmake --build "$tmp/cmake-sub" >>"$tmp/cmake-sub.log" 2>&1 \
+   && "$tmp/cmake-sub/smoke" | grep -qx 'position 0.000000 5.000000'; then
+  ok "add_subdirectory(carom) with the top-level CMakeLists.txt: built, it runs"
+else
+  sed 's/^/    /' "$tmp/cmake-sub.log"
+  bad "add_subdirectory(carom) with the top-level CMakeLists.txt"
 fi
 
 # -------------------------------------------------------------- uninstall
