@@ -110,6 +110,7 @@ check: deps-check
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-readme $(BUILD) || rc=1; }; \
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-exports $(BUILD) || rc=1; }; \
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-api-doc || rc=1; }; \
+	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/api-reference --check || rc=1; }; \
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-version || rc=1; }; \
 	[ $$rc -eq 0 ] && { tools/check-part $(CHECK_LOG) tools/check-ffi $(BUILD) || rc=1; }; \
 	for part in $(CHECK_PARTS); do \
