@@ -35,8 +35,8 @@ if ! $MAKE --no-print-directory BUILD="$BUILD" lib >"$tmp/build.log" 2>&1; then
   exit 1
 fi
 
-version=$(sed -n 's/^VERSION *:= *//p' Makefile)
-major=$(sed -n 's/^VERSION_MAJOR *:= *//p' Makefile)
+version=$($MAKE -s --no-print-directory print-version)
+major=${version%%.*}
 so="$BUILD/libcarom.so.$version"
 
 # --------------------------------------------------------------- exports
