@@ -28,6 +28,7 @@ fi
 ENGINES="accuracy"
 [ -x "$B/accuracy_chipmunk" ] && ENGINES="$ENGINES accuracy_chipmunk"
 [ -x "$B/accuracy_box2d" ] && ENGINES="$ENGINES accuracy_box2d"
+[ -x "$B/accuracy_box2d3" ] && ENGINES="$ENGINES accuracy_box2d3"
 
 r=1
 while [ "$r" -le "$REPEATS" ]; do
@@ -82,7 +83,10 @@ with its debug assertions on).
 * **Peers** at their usual settings, dt 1/60: Chipmunk 7 with iterations 10,
   collision slop 0.01, no sleeping; Box2D 2.4 with velocity iterations 8, position
   iterations 3, continuous collision on, sleeping off, restitution threshold 1 m/s
-  (0 without gravity). Box2D computes in float, carom and Chipmunk in double.
+  (0 without gravity); Box2D v3, when built (\`BOX2D3_DIR\`, mk/bench.mk), at its
+  defaults (4 sub-steps, soft contacts, continuous collision on), one worker,
+  sleeping off, the same restitution threshold. Box2D computes in float, carom
+  and Chipmunk in double.
 * **Time**: wall time of the step calls only (\`clock_gettime\`), the fastest
   of $REPEATS rounds (the engines interleaved; other work on the machine only
   ever adds time, so the fastest round is the least disturbed). *ms/step* is per call; *ms per 1/60 s* is per 1/60 s of
@@ -121,6 +125,7 @@ function label (row,    e, k, v) {
   e = R_engine[row]; k = R_knob[row]; v = R_value[row]
   if (e == "chipmunk") return "**Chipmunk 7** (usual settings)"
   if (e == "box2d") return "**Box2D 2.4** (usual settings)"
+  if (e == "box2d3") return "**Box2D v3** (its defaults)"
   if (k == "default") return "**balanced** (defaults)"
   if (k == "preset" && v == "fast") return "**fast** (substeps 2, iterations 1)"
   if (k == "preset" && v == "precise") return "**precise** (substeps 8, iterations 2, continuous on)"
@@ -220,7 +225,7 @@ END {
     file = plotdir "/need" n "_points.dat"
     for (row = 1; row <= nrow; ++row)
       if (R_measure[row] == m && !R_dup[row] && !R_failed[row] && (R_engine[row] != "carom" || R_knob[row] == "preset" || R_knob[row] == "default")) {
-        nm2 = R_engine[row] == "carom" ? (R_knob[row] == "default" ? "balanced" : R_value[row]) : (R_engine[row] == "box2d" ? "Box2D" : "Chipmunk")
+        nm2 = R_engine[row] == "carom" ? (R_knob[row] == "default" ? "balanced" : R_value[row]) : (R_engine[row] == "box2d" ? "Box2D 2.4" : R_engine[row] == "box2d3" ? "Box2D v3" : "Chipmunk")
         printf "%g %g %s\n", MFm[row], (absv (V[row, k]) > 1e-12 ? absv (V[row, k]) : 1e-12), nm2 >file
       }
     close (file)
@@ -229,16 +234,17 @@ END {
 
   printf "\n## Which setting to pick for which need\n\n"
   printf "Derived by bench/run-accuracy.sh from the tables above at every run (cost: ms per 1/60 s of simulated time; error: the need\047s measure, absolute value). \"2× better\" is the cheapest measured carom setting whose error is at most half the default\047s. A knob has \"no effect\" when every value of it stays within 5%% of the default\047s error.\n\n"
-  printf "| need | measure | balanced | fast | precise | cheapest 2× better than balanced | lowest measured | Chipmunk 7 | Box2D 2.4 |\n|---|---|---|---|---|---|---|---|---|\n"
+  printf "| need | measure | balanced | fast | precise | cheapest 2× better than balanced | lowest measured | Chipmunk 7 | Box2D 2.4 | Box2D v3 |\n|---|---|---|---|---|---|---|---|---|---|\n"
   for (n = 1; n <= NN; ++n) {
     split (NEED[n], f, ":"); m = f[1]; k = f[2]; title = f[3]
-    def = ""; best = ""; cheap = ""; fast = "-"; prec = "-"; cm = "-"; bx = "-"
+    def = ""; best = ""; cheap = ""; fast = "-"; prec = "-"; cm = "-"; bx = "-"; b3 = "-"
     for (row = 1; row <= nrow; ++row) {
       if (R_measure[row] != m || R_dup[row] || R_failed[row]) continue
       err = absv (V[row, k]); cost = MFm[row]
       cell = sprintf ("%s at %s ms", num (err), ms(cost))
       if (R_engine[row] == "chipmunk") { cm = cell; continue }
       if (R_engine[row] == "box2d") { bx = cell; continue }
+      if (R_engine[row] == "box2d3") { b3 = cell; continue }
       if (R_knob[row] == "reference") continue
       if (R_knob[row] == "default") { def = err; defcost = cost; defcell = cell }
       if (R_knob[row] == "preset" && R_value[row] == "fast") fast = cell
@@ -252,7 +258,7 @@ END {
     }
     cheapcell = cheap == "" ? "none measured" : sprintf ("%s: %s at %s ms (×%.1f the time)", label(cheap), num (absv (V[cheap, k])), ms(MFm[cheap]), MFm[cheap] / defcost)
     bestcell = sprintf ("%s: %s at %s ms", label(bestrow), num (absv (V[bestrow, k])), ms(MFm[bestrow]))
-    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", NNAME[n], title, defcell, fast, prec, cheapcell, bestcell, cm, bx
+    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", NNAME[n], title, defcell, fast, prec, cheapcell, bestcell, cm, bx, b3
     # knobs without effect
     noeff = ""
     for (ki = 1; ki <= nknob; ++ki) {

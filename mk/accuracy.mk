@@ -1,6 +1,6 @@
 # What accuracy costs in time (bench/accuracy*.c, bench/peers/accuracy_*):
-# every error measure for each setting of each carom knob, and Chipmunk 7 and
-# Box2D 2.4 on the same measures.
+# every error measure for each setting of each carom knob, and Chipmunk 7,
+# Box2D 2.4 and (with BOX2D3_DIR, mk/bench.mk) Box2D v3 on the same measures.
 #   make bench-accuracy        install the peers if missing, build, run,
 #                              write docs/accuracy.md and docs/accuracy.png
 #   make bench-accuracy-build  only build $(BUILD)/accuracy/*
@@ -18,7 +18,8 @@ ACC_COMMON := accuracy_measures scenes
 
 ACC_BIN = $(ACC_DIR)/accuracy \
           $(if $(BENCH_HAS_CHIPMUNK),$(ACC_DIR)/accuracy_chipmunk) \
-          $(if $(BENCH_HAS_BOX2D),$(ACC_DIR)/accuracy_box2d)
+          $(if $(BENCH_HAS_BOX2D),$(ACC_DIR)/accuracy_box2d) \
+          $(if $(BOX2D3_SKIP),,$(ACC_DIR)/accuracy_box2d3)
 
 .PHONY: bench-accuracy bench-accuracy-build
 bench: bench-accuracy
@@ -34,3 +35,8 @@ bench-accuracy-build: $(BUILD)/libcarom.a
 $(eval $(call bench_program,$(ACC_DIR)/accuracy,accuracy carom_scene $(ACC_COMMON),$(BUILD)/libcarom.a))
 $(eval $(call bench_program,$(ACC_DIR)/accuracy_chipmunk,accuracy_chipmunk $(ACC_COMMON),-lchipmunk))
 $(eval $(call bench_program,$(ACC_DIR)/accuracy_box2d,accuracy_box2d $(ACC_COMMON),-lbox2d))
+$(eval $(call bench_program,$(ACC_DIR)/accuracy_box2d3,accuracy_box2d3 $(ACC_COMMON),$(BOX2D3_LIB)))
+# the Box2D v3 bench's compile rule (its headers, C11) for its accuracy adapter too
+$(BENCH_DIR)/accuracy_box2d3.o: BENCH_COMPILE_C = $(CC) $(CPPFLAGS) -Ibench -Ibench/peers -isystem $(BOX2D3_DIR)/include \
+  $(filter-out -std=%,$(WARN)) -std=c11 $(OPT) $(CFLAGS) -c $< -o $@
+$(BENCH_DIR)/accuracy_box2d3.o: $(BOX2D3_LIB) bench/peers/bench_box2d3.c
