@@ -30,20 +30,23 @@ PY_DIR := $(abspath $(BUILD))/python
 check-python: $(BUILD)/libcarom.so
 	@tools/ensure-deps python
 	@rm -rf $(PY_DIR) && mkdir -p $(PY_DIR)/run
-	$(PYTHON) -m venv $(PY_DIR)/venv
-	$(PY_DIR)/venv/bin/python -m pip install --quiet --upgrade pip setuptools wheel build pytest \
+	@$(PYTHON) -m venv $(PY_DIR)/venv
+	@$(PY_DIR)/venv/bin/python -m pip install --quiet --upgrade pip setuptools wheel build pytest \
 	  || { echo "check-python: cannot install pip, setuptools, build, pytest from PyPI"; \
 	       echo "check-python: 0 passed, 1 failed"; exit 1; }
-	cd $(PY_DIR)/run && $(PY_DIR)/venv/bin/python -m pip install --quiet $(abspath bindings/python)
-	cd $(PY_DIR)/run && CAROM_TEST_INSTALLED=1 PYTHONDONTWRITEBYTECODE=1 \
+	@echo "check-python: pip install ./bindings/python in a fresh venv, tests run from $(PY_DIR)/run"
+	@cd $(PY_DIR)/run && $(PY_DIR)/venv/bin/python -m pip install --quiet $(abspath bindings/python)
+	@cd $(PY_DIR)/run && CAROM_TEST_INSTALLED=1 PYTHONDONTWRITEBYTECODE=1 \
 	  $(PY_DIR)/venv/bin/python -m pytest -p no:cacheprovider -q $(abspath bindings/python/tests)
-	$(PY_DIR)/venv/bin/python -m build --sdist --no-isolation --outdir $(PY_DIR)/dist bindings/python >/dev/null
-	$(PYTHON) -m venv $(PY_DIR)/venv-sdist
-	$(PY_DIR)/venv-sdist/bin/python -m pip install --quiet --upgrade pip setuptools pytest
-	cd $(PY_DIR)/run && $(PY_DIR)/venv-sdist/bin/python -m pip install --quiet $(PY_DIR)/dist/carom-*.tar.gz
-	cd $(PY_DIR)/run && CAROM_TEST_INSTALLED=1 PYTHONDONTWRITEBYTECODE=1 \
+	@echo "check-python: python -m build --sdist, then pip install of the sdist in another fresh venv"
+	@$(PY_DIR)/venv/bin/python -m build --sdist --no-isolation --outdir $(PY_DIR)/dist bindings/python >/dev/null 2>&1
+	@$(PYTHON) -m venv $(PY_DIR)/venv-sdist
+	@$(PY_DIR)/venv-sdist/bin/python -m pip install --quiet --upgrade pip setuptools pytest
+	@cd $(PY_DIR)/run && $(PY_DIR)/venv-sdist/bin/python -m pip install --quiet $(PY_DIR)/dist/carom-*.tar.gz
+	@cd $(PY_DIR)/run && CAROM_TEST_INSTALLED=1 PYTHONDONTWRITEBYTECODE=1 \
 	  $(PY_DIR)/venv-sdist/bin/python -m pytest -p no:cacheprovider -q $(abspath bindings/python/tests)
-	CAROM_LIBRARY=$(BINDINGS_LIB_DIR)/$(SONAME) PYTHONDONTWRITEBYTECODE=1 \
+	@echo "check-python: the checkout's package on $(BINDINGS_LIB_DIR)/$(SONAME) (CAROM_LIBRARY)"
+	@CAROM_LIBRARY=$(BINDINGS_LIB_DIR)/$(SONAME) PYTHONDONTWRITEBYTECODE=1 \
 	  $(PY_DIR)/venv/bin/python -m pytest -p no:cacheprovider -q bindings/python/tests
 	@rm -rf bindings/python/build bindings/python/carom.egg-info
 
