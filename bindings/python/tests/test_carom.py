@@ -507,3 +507,24 @@ def test_debug_draw_and_matplotlib_style_draw():
             raise RuntimeError("from the callback")
         with pytest.raises(RuntimeError):
             world.debug_draw(polygon=boom)
+
+
+def test_draw_on_a_real_matplotlib_axes(tmp_path):
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    with carom.World(gravity=(0, -10)) as world:
+        world.add_box(10, 1, y=-0.5, static=True)
+        world.add_polygon([(0, 0), (3, 0), (3, 3), (2, 3), (2, 1), (1, 1), (1, 3), (0, 3)], y=2)
+        world.add_circle(0.5, x=3, y=1)
+        for _ in range(30):
+            world.step(1 / 60)
+        fig, ax = plt.subplots()
+        carom.draw(world, ax)
+        ax.set_aspect("equal")
+        fig.savefig(tmp_path / "world.png")
+        plt.close(fig)
+        # two polygons and a circle filled; the concave U keeps its 8 corners
+        assert len(ax.patches) == 3
+        assert sorted(len(p.get_xy()) for p in ax.patches)[-1] >= 32  # the circle's 32-gon (closed)
+        assert (tmp_path / "world.png").stat().st_size > 1000
