@@ -526,7 +526,8 @@ typedef struct carom_contact_event {
  * some point of theirs overlaps or received impulse in the update; a pair
  * begins when it touches and did not in the update before, ends when it
  * did and does not, or when one of its bodies was removed (the id is then
- * stale). Every begin is followed, some updates later, by one end. Writes up
+ * stale); a pair whose bodies fell asleep touching stays touching. Every
+ * begin is followed, some updates later, by one end. Writes up
  * to `capacity` events and returns how many there were; bad input as
  * carom_world_query_aabb (-CAROM_ERR_NULL_ARGUMENT, -CAROM_ERR_BAD_ARGUMENT).
  */

@@ -31,7 +31,8 @@ int events_reserve (carom_world *world)
   events *e = &world->events;
   int32_t now = world->contacts.count + world->contacts.sensor_count, last = e->count[e->cur];
   int32_t fresh = 1 - e->cur, table = table_size (last);
-  return mem_reserve (&world->allocator, (void **) &e->touches[fresh], &e->cap[fresh], now, sizeof (touch))
+  /* this update's pairs, and the last one's that sleep on (events_update) */
+  return mem_reserve (&world->allocator, (void **) &e->touches[fresh], &e->cap[fresh], now + last, sizeof (touch))
          && mem_reserve (&world->allocator, (void **) &e->table, &e->table_cap, table, sizeof (int32_t))
          && mem_reserve (&world->allocator, (void **) &e->list, &e->event_cap, now + last,
                          sizeof (carom_contact_event));
@@ -124,6 +125,16 @@ static void emit_end (events *e, const touch *t)
   v->x = t->x, v->y = t->y;
 }
 
+/* A pair of bodies that still exist and neither of which can move (asleep,
+ * or static, or kinematic at rest): detection makes no contact for it, but
+ * the bodies touch as they did, and the pair carries on without an end. */
+static int sleeps_on (const carom_world *world, const touch *t)
+{
+  const body *a = body_lookup (world, t->a), *b = body_lookup (world, t->b);
+  return a && b && a->inv_mass == 0.0 && b->inv_mass == 0.0 && !body_kinematic_moving (a)
+         && !body_kinematic_moving (b);
+}
+
 /* The same pairs in the same order as the last update: the common case of
  * a steady scene, which needs no table and makes no event. */
 static int same_pairs (const touch *old, int32_t old_count, const touch *cur, int32_t n)
@@ -183,7 +194,12 @@ void events_update (carom_world *world)
     }
   for (i = 0; i < e->count[last]; ++i)
     if (!old[i].seen)
-      emit_end (e, &old[i]);
+      {
+        if (!old[i].sensor && sleeps_on (world, &old[i]))
+          cur[e->count[now]++] = old[i]; /* still touching, asleep: no end */
+        else
+          emit_end (e, &old[i]);
+      }
 }
 
 int32_t carom_world_get_events (const carom_world *world, carom_contact_event *list, int32_t capacity)

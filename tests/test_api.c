@@ -639,6 +639,44 @@ static void test_begin_and_end_events_pair_up (void **state)
   carom_world_destroy (w);
 }
 
+/* A body that falls asleep on the ground still touches it: no end event
+ * while it sleeps; woken and thrown up, it ends, and lands again. */
+static void test_sleeping_pairs_do_not_end (void **state)
+{
+  const double dt = 1.0 / 60;
+  carom_world *w = new_world (-10.0);
+  carom_contact_event ev[8];
+  carom_body_id box;
+  int i, begins = 0, ends = 0, slept = 0;
+  int32_t n, k, awake;
+  (void) state;
+  assert_status (carom_world_set_sleeping (w, 1), CAROM_OK);
+  add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 10.0, 1.0);
+  box = add_box (w, CAROM_DYNAMIC, 0.0, 0.5, 0.0, 1.0, 1.0);
+  for (i = 0; i < 240; ++i)
+    {
+      if (i == 150)
+        {
+          assert_status (carom_body_is_awake (w, box, &awake), CAROM_OK);
+          slept = !awake;
+          assert_status (carom_body_apply_impulse (w, box, 0.0, 5.0, 0.0, 0.5), CAROM_OK);
+        }
+      assert_status (carom_world_update (w, dt), CAROM_OK);
+      n = carom_world_get_events (w, ev, 8);
+      for (k = 0; k < n; ++k)
+        {
+          begins += ev[k].type == CAROM_EVENT_CONTACT_BEGIN;
+          ends += ev[k].type == CAROM_EVENT_CONTACT_END;
+          /* nothing ends while it sleeps, before the throw */
+          assert_false (i < 150 && ev[k].type == CAROM_EVENT_CONTACT_END);
+        }
+    }
+  assert_true (slept);
+  assert_int_equal (begins, 2); /* built resting, then the landing */
+  assert_int_equal (ends, 1);   /* the throw */
+  carom_world_destroy (w);
+}
+
 /* ------------------------------------------------------------ debug draw */
 
 typedef struct draw_count {
@@ -718,6 +756,7 @@ int main (void)
     cmocka_unit_test (test_point_query_in_a_notch),
     cmocka_unit_test (test_dropped_ball_begin_event_reports_its_approach),
     cmocka_unit_test (test_begin_and_end_events_pair_up),
+    cmocka_unit_test (test_sleeping_pairs_do_not_end),
     cmocka_unit_test (test_debug_draw_draws_everything),
   };
   return cmocka_run_group_tests (tests, NULL, NULL);
