@@ -68,14 +68,20 @@ carom_status carom_body_apply_torque (carom_world *world, carom_body_id id, doub
   return add_force (world, b, v2 (0.0, 0.0), torque);
 }
 
-/* v += dv, w += dw, refusing results beyond CAROM_MAX_MAGNITUDE. */
-static carom_status change_velocity (body *b, vec2 dv, double dw)
+/* An impulse j at the world point p, eq. 3.23's effect on one body:
+ * v += j / m, w += ((p - c) x j + angular) / I, with the inverses of the
+ * awake body (a sleeping one keeps 0 until woken). A result beyond
+ * CAROM_MAX_MAGNITUDE is refused, and then nothing changes, sleep
+ * included; otherwise the body wakes. */
+static carom_status apply_impulse (body *b, vec2 j, vec2 p, double angular)
 {
-  vec2 v = v2_add (b->v, dv);
-  double w = b->w + dw;
+  double im = 1.0 / b->mass, ii = b->fixed_rotation ? 0.0 : 1.0 / b->inertia;
+  vec2 v = v2_mad (b->v, im, j);
+  double w = b->w + (v2_cross (v2_sub (p, b->p), j) + angular) * ii;
   if (!is_finite (v.x) || !is_finite (v.y) || !is_finite (w) || !is_moderate (v.x) || !is_moderate (v.y)
       || !is_moderate (w))
     return CAROM_ERR_BAD_ARGUMENT;
+  body_wake (b);
   b->v = v;
   b->w = w;
   return CAROM_OK;
@@ -85,15 +91,12 @@ carom_status carom_body_apply_impulse (carom_world *world, carom_body_id id, dou
                                        double py)
 {
   body *b;
-  vec2 j = v2 (jx, jy);
   carom_status st = dynamic_body (world, id, &b);
   if (st == CAROM_OK)
     st = check_numbers (jx, jy, px, py);
   if (st != CAROM_OK)
     return st;
-  body_wake (b); /* a sleeping body's inverse masses are 0 until then */
-  /* eq. 3.23's effect on one body: dv = J / m, dw = (p - c) x J / I */
-  return change_velocity (b, v2_scale (j, b->inv_mass), v2_cross (v2_sub (v2 (px, py), b->p), j) * b->inv_inertia);
+  return apply_impulse (b, v2 (jx, jy), v2 (px, py), 0.0);
 }
 
 carom_status carom_body_apply_angular_impulse (carom_world *world, carom_body_id id, double j)
@@ -104,8 +107,7 @@ carom_status carom_body_apply_angular_impulse (carom_world *world, carom_body_id
     st = check_numbers (j, 0.0, 0.0, 0.0);
   if (st != CAROM_OK)
     return st;
-  body_wake (b);
-  return change_velocity (b, v2 (0.0, 0.0), j * b->inv_inertia);
+  return apply_impulse (b, v2 (0.0, 0.0), b->p, j);
 }
 
 carom_status force_check (const carom_world *world, double dt)

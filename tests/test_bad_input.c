@@ -1312,6 +1312,37 @@ static void test_version_0_2_calls_refuse_bad_input (void **state)
   assert_status (carom_world_draw (w, NULL), CAROM_ERR_NULL_ARGUMENT);
   draw.size = 3;
   assert_status (carom_world_draw (w, &draw), CAROM_ERR_BAD_STRUCT_SIZE);
+  /* a refused impulse leaves a sleeping body asleep (nothing changes) */
+  {
+    carom_world *sw = new_world (-10.0);
+    carom_body_def sd;
+    carom_body_id sleeper;
+    uint64_t before;
+    int32_t awake = 1;
+    add_ground (sw, -0.5, 20.0, 1.0);
+    carom_body_def_init (&sd, sizeof sd);
+    sd.y = 0.5, sd.density = 0.01;
+    assert_status (carom_world_add_box (sw, &sd, 1.0, 1.0, &sleeper), CAROM_OK);
+    assert_status (carom_world_set_sleeping (sw, 1), CAROM_OK);
+    for (k = 0; k < 120; ++k)
+      assert_status (carom_world_update (sw, 1.0 / 60), CAROM_OK);
+    assert_status (carom_body_is_awake (sw, sleeper, &awake), CAROM_OK);
+    assert_int_equal (awake, 0);
+    before = world_state_hash (sw);
+    assert_status (carom_body_apply_impulse (sw, sleeper, 0.0, 9e99, 0.0, 0.5), CAROM_ERR_BAD_ARGUMENT);
+    assert_status (carom_body_apply_angular_impulse (sw, sleeper, 9e99), CAROM_ERR_BAD_ARGUMENT);
+    assert_true (world_state_hash (sw) == before);
+    /* and an accepted one wakes it, with the awake body's inverse mass */
+    assert_status (carom_body_apply_impulse (sw, sleeper, 0.0, 0.02, 0.0, 0.5), CAROM_OK);
+    assert_status (carom_body_is_awake (sw, sleeper, &awake), CAROM_OK);
+    assert_int_equal (awake, 1);
+    {
+      double vx, vy;
+      assert_status (carom_body_get_velocity (sw, sleeper, &vx, &vy), CAROM_OK);
+      assert_near_rel (vy, 0.02 / 0.01, 1e-15);
+    }
+    carom_world_destroy (sw);
+  }
   /* forces too strong for an update: refused, nothing changes, and
    * clear_forces is the way out */
   {
