@@ -53,9 +53,14 @@ static int steps_within_budget (const carom_world *w, const char *text, size_t l
   carom_world_get_bodies (w, ids, n);
   for (i = 0; i < n; ++i)
     {
-      int32_t count = 0;
-      carom_body_get_vertices (w, ids[i], NULL, 0, &count);
-      vertices += count > 0 ? count : 1;
+      int32_t shapes = 0, k;
+      carom_body_get_shape_count (w, ids[i], &shapes);
+      for (k = 0; k < shapes; ++k)
+        {
+          int32_t count = 0;
+          carom_body_get_shape_geometry (w, ids[i], k, NULL, NULL, NULL, NULL, NULL, 0, &count);
+          vertices += count > 0 ? count : 1;
+        }
     }
   if (ids != stack_ids)
     free (ids);

@@ -23,7 +23,8 @@
  *      rotation, wake, continuous collision for the world or one body), add
  *      a body, detect, calls with stale and made-up ids, and the calls of
  *      version 0.2 (forces, impulses, filters, user data, ray casts,
- *      queries, events, the debug draw: op_api).
+ *      queries, events, the debug draw, compound bodies and their shapes:
+ *      op_api).
  * After every operation every body's state and every contact must be finite.
  *
  * Extreme but finite values are fed to every call. include/carom.h bounds
@@ -635,6 +636,113 @@ static void count_circle (double x, double y, double r, double angle, carom_body
   ++*(int *) user;
 }
 
+/* A compound of up to 4 fuzzed shapes (circles, a U or an arrow, or no
+ * kind at all), each at a fuzzed place with a fuzzed size, density and
+ * material: refused with a status that applies and nothing created, or
+ * accepted with finite, positive mass properties; its shapes then read
+ * back (count, geometry, material) within what was given. */
+static void add_fuzzed_compound (fuzz_world *f)
+{
+  carom_shape_def shapes[4];
+  double xy[4][16];
+  carom_body_def d;
+  carom_body_id id = 99;
+  int32_t count = (int32_t) (fuzz_u8 (&f->in) % 5), before = carom_world_body_count (f->w), i, j, n;
+  unsigned problems = 0, extreme = 0;
+  carom_status s;
+  if (carom_body_def_init (&d, sizeof d) != CAROM_OK)
+    FUZZ_FINDING ("body_def_init failed");
+  d.x = (int8_t) fuzz_u8 (&f->in) * 0.25, d.y = (int8_t) fuzz_u8 (&f->in) * 0.25;
+  if (fuzz_u8 (&f->in) & 1)
+    d.type = CAROM_STATIC;
+  if (count == 0)
+    problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
+  for (i = 0; i < count; ++i)
+    {
+      carom_shape_def *sh = &shapes[i];
+      uint8_t flags = fuzz_u8 (&f->in);
+      double size = (flags & 1) ? fuzz_number (&f->in, 0) : 0.25 + (fuzz_u8 (&f->in) & 7) * 0.25;
+      if (carom_shape_def_init (sh, sizeof *sh) != CAROM_OK)
+        FUZZ_FINDING ("shape_def_init failed");
+      sh->x = (int8_t) fuzz_u8 (&f->in) * 0.25, sh->y = (int8_t) fuzz_u8 (&f->in) * 0.25;
+      if (flags & 2)
+        sh->x = fuzz_number (&f->in, 0), sh->angle = fuzz_number (&f->in, 0);
+      if (flags & 4)
+        sh->density = fuzz_number (&f->in, 0);
+      if (flags & 8)
+        sh->restitution = fuzz_number (&f->in, 0), sh->friction = fuzz_number (&f->in, 0);
+      sh->kind = (flags & 16) ? CAROM_SHAPE_POLYGON : CAROM_SHAPE_CIRCLE;
+      if ((flags & 0x60) == 0x60)
+        sh->kind = (carom_shape_kind) (int32_t) fuzz_u32 (&f->in);
+      if (!isfinite (sh->x) || !isfinite (sh->angle) || !isfinite (sh->density) || !isfinite (sh->restitution)
+          || !isfinite (sh->friction) || !isfinite (size))
+        problems |= BIT (CAROM_ERR_NOT_FINITE);
+      if (too_big (sh->x) || too_big (sh->angle) || sh->restitution > 1.0
+          || (sh->kind != CAROM_SHAPE_CIRCLE && sh->kind != CAROM_SHAPE_POLYGON))
+        problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
+      if (sh->density == 0.0)
+        problems |= BIT (CAROM_ERR_BAD_DENSITY);
+      if (sh->kind == CAROM_SHAPE_POLYGON)
+        {
+          const double *src = (flags & 128) ? shape_arrow : shape_u;
+          n = (flags & 128) ? 4 : 8;
+          for (j = 0; j < 2 * n; ++j)
+            xy[i][j] = src[j] * size;
+          sh->xy = xy[i], sh->count = n;
+          if (size == 0.0)
+            problems |= BIT (CAROM_ERR_REPEATED_VERTEX);
+          /* far out or turned, rounding may merge, flatten or cross
+           * vertices: the polygon statuses are truthful then */
+          extreme |= BIT (CAROM_ERR_REPEATED_VERTEX) | BIT (CAROM_ERR_ZERO_AREA) | BIT (CAROM_ERR_SELF_INTERSECTING);
+        }
+      else
+        {
+          sh->radius = size;
+          if (isfinite (size) && !(size > SIZE_LO && size < SIZE_HI))
+            problems |= BIT (CAROM_ERR_BAD_SIZE);
+        }
+      if (!in_range (fabs (size), 1e-30, 1e30) || !(sh->density < 0.0 || in_range (sh->density, 1e-30, 1e30))
+          || !in_range (fabs (sh->x), 0.0, 1e30))
+        extreme |= BIT (CAROM_ERR_BAD_SIZE) | BIT (CAROM_ERR_BAD_DENSITY) | BIT (CAROM_ERR_NOT_FINITE);
+    }
+  s = carom_world_add_compound (f->w, &d, shapes, count, &id);
+  TRACE ("add compound of %d shapes: status %d\n", (int) count, (int) s);
+  if (!fuzz_known_status (s))
+    FUZZ_FINDING ("add_compound returned unknown status %d", (int) s);
+  if (problems != 0 ? s == CAROM_OK || !((problems | extreme) & BIT (s)) : s != CAROM_OK && !(extreme & BIT (s)))
+    FUZZ_FINDING ("add_compound of %d shapes returned %d (%s); problems 0x%x, extreme 0x%x", (int) count, (int) s,
+                  carom_status_string (s), problems, extreme);
+  if (s != CAROM_OK)
+    {
+      if (id != 99 || carom_world_body_count (f->w) != before)
+        FUZZ_FINDING ("a refused add_compound wrote *id or changed the body count");
+      return;
+    }
+  if (carom_body_get_shape_count (f->w, id, &n) != CAROM_OK || n != count)
+    FUZZ_FINDING ("a compound of %d shapes has %d", (int) count, (int) n);
+  for (i = 0; i < count; ++i)
+    {
+      carom_shape_kind kind;
+      double x, y, r, density, e, mu, v[32];
+      int32_t vn;
+      if (carom_body_get_shape_geometry (f->w, id, i, &kind, &x, &y, &r, v, 16, &vn) != CAROM_OK
+          || carom_body_get_shape_material (f->w, id, i, &density, &e, &mu) != CAROM_OK)
+        FUZZ_FINDING ("shape %d of a compound cannot be read", (int) i);
+      if (kind != shapes[i].kind || vn != (kind == CAROM_SHAPE_POLYGON ? shapes[i].count : 0) || !(r > 0.0)
+          || !(density > 0.0) || !(e >= 0.0 && e <= 1.0) || !(mu >= 0.0))
+        FUZZ_FINDING ("shape %d of a compound reads back wrong", (int) i);
+    }
+  fuzz_check_world (f->w, "after a compound");
+  if (f->count >= 64)
+    {
+      if (carom_world_remove_body (f->w, id) != CAROM_OK)
+        FUZZ_FINDING ("removing a new compound failed");
+      return;
+    }
+  f->fixed[f->count] = 0;
+  f->ids[f->count++] = id;
+}
+
 /* Forces, impulses, filters, user data, ray casts, queries, events and the
  * debug draw with fuzzed arguments: non-finite numbers give NOT_FINITE,
  * ones beyond CAROM_MAX_MAGNITUDE BAD_ARGUMENT (also a sum or a resulting
@@ -644,7 +752,7 @@ static void count_circle (double x, double y, double r, double angle, carom_body
 static void op_api (fuzz_world *f)
 {
   state before[64];
-  uint8_t what = fuzz_u8 (&f->in) % 10;
+  uint8_t what = fuzz_u8 (&f->in) % 11;
   int k = f->count ? fuzz_u8 (&f->in) % f->count : 0;
   double a = fuzz_number (&f->in, 0), b = fuzz_number (&f->in, 0), c = fuzz_number (&f->in, 0),
          d = fuzz_number (&f->in, 0);
@@ -654,6 +762,11 @@ static void op_api (fuzz_world *f)
   carom_status s = CAROM_OK;
   int finite = isfinite (a) && isfinite (b) && isfinite (c) && isfinite (d);
   int big = too_big (a) || too_big (b) || too_big (c) || too_big (d);
+  if (what == 10)
+    {
+      add_fuzzed_compound (f);
+      return;
+    }
   if (f->count == 0 && what < 6)
     return;
   if (f->count)
@@ -738,7 +851,7 @@ static void op_api (fuzz_world *f)
       {
         carom_contact_event ev[32];
         carom_debug_draw draw;
-        int drawn = 0;
+        int drawn = 0, shapes = 0;
         int32_t n = carom_world_get_events (f->w, ev, 32);
         if (n < 0)
           FUZZ_FINDING ("get_events returned %d", (int) n);
@@ -748,8 +861,15 @@ static void op_api (fuzz_world *f)
             FUZZ_FINDING ("event %d is not one", (int) k);
         carom_debug_draw_init (&draw, sizeof draw);
         draw.polygon = count_polygon, draw.circle = count_circle, draw.user = &drawn;
-        if (carom_world_draw (f->w, &draw) != CAROM_OK || drawn != carom_world_body_count (f->w))
-          FUZZ_FINDING ("the debug draw drew %d bodies of %d", drawn, (int) carom_world_body_count (f->w));
+        for (k = 0; k < f->count; ++k)
+          {
+            int32_t m = 0;
+            if (carom_body_get_shape_count (f->w, f->ids[k], &m) != CAROM_OK || m < 1)
+              FUZZ_FINDING ("body %d has no shapes", k);
+            shapes += m;
+          }
+        if (carom_world_draw (f->w, &draw) != CAROM_OK || drawn != shapes)
+          FUZZ_FINDING ("the debug draw drew %d shapes of %d", drawn, shapes);
         break;
       }
     }

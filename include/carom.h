@@ -78,6 +78,8 @@ CAROM_API const char *carom_status_string (carom_status status);
 
 /** Largest vertex count accepted for one polygon. */
 #define CAROM_MAX_POLYGON_VERTICES 1024
+/** Most shapes in one compound body (version 0.2). */
+#define CAROM_MAX_COMPOUND_SHAPES 256
 /** Largest magnitude accepted for coordinates, angles, velocities, spins,
  * accelerations and rates (BAD_ARGUMENT beyond), so that the products the
  * solver forms stay within doubles. Time steps lie in [1e-100, 1e100]. */
@@ -241,6 +243,9 @@ typedef enum carom_body_type {
 typedef enum carom_shape_kind {
   CAROM_SHAPE_CIRCLE = 0,
   CAROM_SHAPE_POLYGON = 1, /**< boxes and regular polygons are polygons too */
+  /** a body of several circles and polygons (carom_world_add_compound;
+   * version 0.2) */
+  CAROM_SHAPE_COMPOUND = 2,
   CAROM_SHAPE_KIND_FORCE_32 = 0x7fffffff
 } carom_shape_kind;
 
@@ -324,6 +329,58 @@ CAROM_API carom_status carom_world_add_polygon (carom_world *world,
                                                 int32_t count,
                                                 carom_body_id *id);
 
+/**
+ * One shape of a compound body (version 0.2). Fill with
+ * carom_shape_def_init, then change fields.
+ */
+typedef struct carom_shape_def {
+  uint32_t size;          /**< the caller's sizeof, set by def_init */
+  carom_shape_kind kind;  /**< CAROM_SHAPE_CIRCLE (default) or
+                               CAROM_SHAPE_POLYGON */
+  double x, y;            /**< where it sits in the body's coordinates: a
+                               circle's centre; a polygon's vertices are
+                               turned by `angle`, then moved by (x, y);
+                               default 0 */
+  double angle;           /**< radians; default 0 */
+  double radius;          /**< a circle's; default 0 (must be set) */
+  const double *xy;       /**< a polygon's vertices, x0, y0, x1, y1, ...,
+                               either winding, convex or concave (read
+                               during the call only); default NULL */
+  int32_t count;          /**< how many vertices; default 0 */
+  double density;         /**< mass per unit area, > 0, or < 0 for the
+                               body def's; default -1 */
+  double restitution;     /**< e in [0, 1], or < 0 for the body's; default
+                               -1 */
+  double friction;        /**< mu >= 0, or < 0 for the body's; default -1 */
+} carom_shape_def;
+
+/** Fill `def` with the defaults above. Errors: NULL_ARGUMENT,
+ * BAD_STRUCT_SIZE. */
+CAROM_API carom_status carom_shape_def_init (carom_shape_def *def,
+                                             uint32_t size);
+
+/**
+ * Add a body made of `count` shapes (1 to CAROM_MAX_COMPOUND_SHAPES), any
+ * mix of circles and polygons (concave ones too), each with its own density
+ * and material (version 0.2). The shapes are given in body coordinates;
+ * the centre of mass of their union is placed at (def->x, def->y) and the
+ * body turned by def->angle about it. Mass is the sum of the shapes'
+ * masses, inertia the sum of their inertias moved to the centre of mass by
+ * the parallel axis theorem (so shapes that overlap count their common
+ * area once for each). A contact between two shapes takes their materials;
+ * carom_body_get_material reports the body def's. Compounds collide by the
+ * SAT narrow phase whatever the world's narrow_phase. Errors as
+ * carom_world_add_polygon and carom_world_add_circle for each shape (each
+ * shape's size and vertex checks), plus NULL_ARGUMENT (shapes, or a
+ * polygon's xy), BAD_STRUCT_SIZE (a shape's size), BAD_ARGUMENT (count out
+ * of range, a kind not circle or polygon, a restitution over 1).
+ */
+CAROM_API carom_status carom_world_add_compound (carom_world *world,
+                                                 const carom_body_def *def,
+                                                 const carom_shape_def *shapes,
+                                                 int32_t count,
+                                                 carom_body_id *id);
+
 /** Remove a body; its id becomes stale. Errors: NULL_ARGUMENT, STALE_BODY. */
 CAROM_API carom_status carom_world_remove_body (carom_world *world,
                                                 carom_body_id id);
@@ -378,12 +435,46 @@ CAROM_API carom_status carom_body_get_material (const carom_world *world,
 /**
  * The polygon's vertices in world coordinates, counter-clockwise: writes up to
  * `capacity` points as x0, y0, x1, y1, ... into `xy` (2 * capacity doubles)
- * and the vertex count into *count (0 for a circle).
+ * and the vertex count into *count (0 for a circle and for a compound,
+ * whose shapes carom_body_get_shape_geometry gives one by one).
  */
 CAROM_API carom_status carom_body_get_vertices (const carom_world *world,
                                                 carom_body_id id, double *xy,
                                                 int32_t capacity,
                                                 int32_t *count);
+
+/**
+ * The shapes a body is made of (version 0.2): 1 for a circle or polygon
+ * body, the number of shapes of a compound. Errors: NULL_ARGUMENT,
+ * STALE_BODY.
+ */
+CAROM_API carom_status carom_body_get_shape_count (const carom_world *world,
+                                                   carom_body_id id,
+                                                   int32_t *count);
+
+/**
+ * Shape `index` (0 <= index < carom_body_get_shape_count) of a body, in
+ * world coordinates: its kind (circle or polygon), its centroid (a
+ * circle's centre), its radius (a polygon's: the farthest vertex from its
+ * centroid), and a polygon's vertices counter-clockwise as
+ * carom_body_get_vertices writes them (up to `capacity` points; *count is
+ * the vertex count, 0 for a circle). NULL outputs are skipped. Errors:
+ * NULL_ARGUMENT, STALE_BODY, BAD_ARGUMENT (index; capacity < 0).
+ */
+CAROM_API carom_status carom_body_get_shape_geometry (
+    const carom_world *world, carom_body_id id, int32_t index,
+    carom_shape_kind *kind, double *x, double *y, double *radius, double *xy,
+    int32_t capacity, int32_t *count);
+
+/**
+ * Shape `index`'s density and the restitution and friction its contacts
+ * use (the body's where the shape gave none, after world defaults). A
+ * static body's shapes report the density they were given. Errors as
+ * carom_body_get_shape_geometry.
+ */
+CAROM_API carom_status carom_body_get_shape_material (
+    const carom_world *world, carom_body_id id, int32_t index,
+    double *density, double *restitution, double *friction);
 
 /* ----------------------------------------------- forces, data, filtering */
 
@@ -543,7 +634,8 @@ CAROM_API int32_t carom_world_get_events (const carom_world *world,
  */
 typedef struct carom_debug_draw {
   uint32_t size;  /**< the caller's sizeof, set by def_init */
-  /** a polygon body's outline, counter-clockwise, in world coordinates */
+  /** a polygon body's outline, counter-clockwise, in world coordinates
+   * (a compound body's shapes are drawn one by one, with its id) */
   void (*polygon) (const double *xy, int32_t count, carom_body_id body,
                    void *user);
   /** a circle body (angle: where its radius marker points) */

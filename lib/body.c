@@ -62,28 +62,44 @@ void body_wake (body *b)
   b->inv_inertia = b->fixed_rotation ? 0.0 : 1.0 / b->inertia;
 }
 
+/* A circle or polygon shape's box, `center` its centre in the body frame. */
+static void part_box (const shape *s, vec2 center, xform t, vec2 *lo, vec2 *hi)
+{
+  int32_t i;
+  if (s->kind == CAROM_SHAPE_CIRCLE)
+    {
+      vec2 c = xform_apply (t, center);
+      *lo = v2 (c.x - s->radius, c.y - s->radius);
+      *hi = v2 (c.x + s->radius, c.y + s->radius);
+      return;
+    }
+  *lo = *hi = xform_apply (t, s->vertices[0]);
+  for (i = 1; i < s->count; ++i)
+    {
+      vec2 v = xform_apply (t, s->vertices[i]);
+      *lo = v2_min (*lo, v);
+      *hi = v2_max (*hi, v);
+    }
+}
+
 void body_sync (body *b)
 {
+  xform t;
+  int32_t i;
   b->q = rot2_from_angle (b->angle);
-  if (b->shape.kind == CAROM_SHAPE_CIRCLE)
+  t.p = b->p;
+  t.q = b->q;
+  if (b->shape.kind != CAROM_SHAPE_COMPOUND)
     {
-      double r = b->shape.radius;
-      b->box_lo = v2 (b->p.x - r, b->p.y - r);
-      b->box_hi = v2 (b->p.x + r, b->p.y + r);
+      part_box (&b->shape, v2 (0.0, 0.0), t, &b->box_lo, &b->box_hi);
+      return;
     }
-  else
+  for (i = 0; i < b->shape.part_count; ++i)
     {
-      xform t;
-      int32_t i;
-      t.p = b->p;
-      t.q = b->q;
-      b->box_lo = b->box_hi = xform_apply (t, b->shape.vertices[0]);
-      for (i = 1; i < b->shape.count; ++i)
-        {
-          vec2 v = xform_apply (t, b->shape.vertices[i]);
-          b->box_lo = v2_min (b->box_lo, v);
-          b->box_hi = v2_max (b->box_hi, v);
-        }
+      vec2 lo, hi;
+      part_box (&b->shape.parts[i].s, b->shape.parts[i].center, t, &lo, &hi);
+      b->box_lo = i == 0 ? lo : v2_min (b->box_lo, lo);
+      b->box_hi = i == 0 ? hi : v2_max (b->box_hi, hi);
     }
 }
 
@@ -134,11 +150,19 @@ static int size_in_range (double x)
  * density so extreme, that they underflow to 0 or overflow to infinity
  * would give an infinite inverse mass and poison every contact it joins.
  * (Statics keep zero inverses and only need a finite size.) */
-static carom_status check_mass (const carom_body_def *def, const shape *s, double inertia_unit)
+static carom_status check_mass (const carom_body_def *def, const shape *s)
 {
-  double m = def->density * s->area, inertia = def->density * inertia_unit;
-  if (!(s->area > 0.0) || !is_finite (s->area) || !(inertia_unit > 0.0) || !is_finite (inertia_unit)
-      || !(s->size > 0.0) || !is_finite (s->bound_radius))
+  double m, inertia;
+  shape_mass (s, def->density, &m, &inertia);
+  if (s->kind == CAROM_SHAPE_COMPOUND)
+    {
+      /* the parts' own densities place the centre of mass, static or not */
+      if (!(m > 0.0) || !is_finite (m) || !(inertia > 0.0) || !is_finite (inertia))
+        return CAROM_ERR_BAD_DENSITY;
+    }
+  else if (!(s->unit_inertia > 0.0) || !is_finite (s->unit_inertia))
+    return CAROM_ERR_BAD_SIZE;
+  if (!(s->area > 0.0) || !is_finite (s->area) || !(s->size > 0.0) || !is_finite (s->bound_radius))
     return CAROM_ERR_BAD_SIZE;
   /* A mass outside [1e-200, 1e200], or an inertia below 1e-300, is
    * refused: a body of mass 1e-308 (finite, and so is its inverse) has
@@ -153,7 +177,7 @@ static carom_status check_mass (const carom_body_def *def, const shape *s, doubl
 }
 
 /* Place a fully built shape into a new body. Cannot fail: reserve_slot ran. */
-static carom_body_id commit_body (carom_world *world, const carom_body_def *def, const shape *s, double inertia_unit)
+static carom_body_id commit_body (carom_world *world, const carom_body_def *def, const shape *s)
 {
   int32_t slot;
   body *b;
@@ -174,6 +198,7 @@ static carom_body_id commit_body (carom_world *world, const carom_body_def *def,
   b->shape = *s;
   b->p = v2 (def->x, def->y);
   b->angle = def->angle;
+  b->density = def->density;
   b->restitution = def->restitution;
   b->friction = def->friction;
   b->user_data = def->user_data;
@@ -190,8 +215,7 @@ static carom_body_id commit_body (carom_world *world, const carom_body_def *def,
     {
       b->v = v2 (def->vx, def->vy);
       b->w = def->spin;
-      b->mass = def->density * s->area;
-      b->inertia = def->density * inertia_unit;
+      shape_mass (s, def->density, &b->mass, &b->inertia);
       b->inv_mass = 1.0 / b->mass;
       b->inv_inertia = 1.0 / b->inertia;
     }
@@ -219,69 +243,65 @@ static carom_status begin_add (carom_world *world, const carom_body_def **def, c
   return reserve_slot (world);
 }
 
-carom_status carom_world_add_circle (carom_world *world, const carom_body_def *def, double radius, carom_body_id *id)
+/* Check the built shape's mass and make it a body, or free it. */
+static carom_status finish_add (carom_world *world, const carom_body_def *def, shape *s, carom_body_id *id)
 {
-  carom_body_def defaults;
-  shape s;
   carom_body_id new_id;
-  carom_status st = begin_add (world, &def, &defaults);
+  carom_status st = check_mass (def, s);
   if (st != CAROM_OK)
-    return st;
-  if (!is_finite (radius))
-    return CAROM_ERR_NOT_FINITE;
-  if (radius <= 0.0 || !size_in_range (radius))
-    return CAROM_ERR_BAD_SIZE;
-  shape_init_circle (&s, radius);
-  st = check_mass (def, &s, s.unit_inertia);
-  if (st != CAROM_OK)
-    return st;
-  new_id = commit_body (world, def, &s, s.unit_inertia);
+    {
+      shape_destroy (s, &world->allocator);
+      return st;
+    }
+  new_id = commit_body (world, def, s);
   if (id)
     *id = new_id;
   return CAROM_OK;
 }
 
-static carom_status add_polygon_shape (carom_world *world, const carom_body_def *def, const double *xy, int32_t n,
-                                       const double *exact_unit_inertia, carom_body_id *id)
+static carom_status check_radius (double radius)
 {
-  shape s;
-  vec2 centroid;
-  carom_body_def placed = *def;
-  carom_body_id new_id;
-  carom_status st = polygon_validate (xy, n);
-  if (st != CAROM_OK)
-    return st;
-  st = shape_init_polygon (&s, &world->allocator, xy, n, &centroid);
-  if (st != CAROM_OK)
-    return st;
-  (void) centroid; /* the body's position is its centre of mass: def->x, y */
-  st = check_mass (def, &s, exact_unit_inertia ? *exact_unit_inertia : s.unit_inertia);
-  if (st != CAROM_OK)
-    {
-      shape_destroy (&s, &world->allocator);
-      return st;
-    }
-  new_id = commit_body (world, &placed, &s, exact_unit_inertia ? *exact_unit_inertia : s.unit_inertia);
-  if (id)
-    *id = new_id;
+  if (!is_finite (radius))
+    return CAROM_ERR_NOT_FINITE;
+  if (radius <= 0.0 || !size_in_range (radius))
+    return CAROM_ERR_BAD_SIZE;
   return CAROM_OK;
+}
+
+carom_status carom_world_add_circle (carom_world *world, const carom_body_def *def, double radius, carom_body_id *id)
+{
+  carom_body_def defaults;
+  shape s;
+  carom_status st = begin_add (world, &def, &defaults);
+  if (st == CAROM_OK)
+    st = check_radius (radius);
+  if (st != CAROM_OK)
+    return st;
+  shape_init_circle (&s, radius);
+  return finish_add (world, def, &s, id);
 }
 
 carom_status carom_world_add_polygon (carom_world *world, const carom_body_def *def, const double *xy, int32_t count,
                                       carom_body_id *id)
 {
   carom_body_def defaults;
+  shape s;
+  vec2 centroid; /* the body's position is its centre of mass: def->x, y */
   carom_status st = begin_add (world, &def, &defaults);
+  if (st == CAROM_OK)
+    st = polygon_validate (xy, count);
+  if (st == CAROM_OK)
+    st = shape_init_polygon (&s, &world->allocator, xy, count, &centroid);
   if (st != CAROM_OK)
     return st;
-  return add_polygon_shape (world, def, xy, count, NULL, id);
+  return finish_add (world, def, &s, id);
 }
 
 carom_status carom_world_add_box (carom_world *world, const carom_body_def *def, double width, double height,
                                   carom_body_id *id)
 {
   carom_body_def defaults;
-  double xy[8], unit_inertia;
+  shape s;
   carom_status st = begin_add (world, &def, &defaults);
   if (st != CAROM_OK)
     return st;
@@ -292,21 +312,17 @@ carom_status carom_world_add_box (carom_world *world, const carom_body_def *def,
   /* a plate thinner than 1e-10 of its length has no interior to collide */
   if (width < 1e-10 * height || height < 1e-10 * width)
     return CAROM_ERR_BAD_SIZE;
-  xy[0] = -0.5 * width, xy[1] = -0.5 * height;
-  xy[2] = 0.5 * width, xy[3] = -0.5 * height;
-  xy[4] = 0.5 * width, xy[5] = 0.5 * height;
-  xy[6] = -0.5 * width, xy[7] = 0.5 * height;
-  /* eq. 3.4: I = m (w^2 + h^2) / 12, here per unit density (m = w h) */
-  unit_inertia = width * height * (width * width + height * height) / 12.0;
-  return add_polygon_shape (world, def, xy, 4, &unit_inertia, id);
+  st = shape_init_box (&s, &world->allocator, width, height);
+  if (st != CAROM_OK)
+    return st;
+  return finish_add (world, def, &s, id);
 }
 
 carom_status carom_world_add_regular (carom_world *world, const carom_body_def *def, int32_t n, double side,
                                       carom_body_id *id)
 {
   carom_body_def defaults;
-  double *xy, radius, area, cot, unit_inertia;
-  int32_t i;
+  shape s;
   carom_status st = begin_add (world, &def, &defaults);
   if (st != CAROM_OK)
     return st;
@@ -318,25 +334,98 @@ carom_status carom_world_add_regular (carom_world *world, const carom_body_def *
     return CAROM_ERR_NOT_FINITE;
   if (side <= 0.0 || !size_in_range (side))
     return CAROM_ERR_BAD_SIZE;
-  xy = mem_alloc (&world->allocator, (size_t) n * 2 * sizeof (double));
-  if (!xy)
-    return CAROM_ERR_OUT_OF_MEMORY;
-  /* circumradius of a regular n-gon with side l: l / (2 sin(pi / n)) */
-  radius = side / (2.0 * sin (CAROM_PI / n));
-  for (i = 0; i < n; ++i)
+  st = shape_init_regular (&s, &world->allocator, n, side);
+  if (st != CAROM_OK)
+    return st;
+  return finish_add (world, def, &s, id);
+}
+
+/* ------------------------------------------------------------ compounds */
+
+/* One shape def checked against the body's, and its part built. `xy` has
+ * room for CAROM_MAX_POLYGON_VERTICES points. */
+static carom_status build_part (carom_world *world, const carom_body_def *body_def, const carom_shape_def *in,
+                                shape_part *part, double *xy)
+{
+  carom_shape_def d;
+  carom_status st = shape_def_import (in, &d);
+  double c, s;
+  int32_t i;
+  if (st != CAROM_OK)
+    return st;
+  if (!is_finite (d.x) || !is_finite (d.y) || !is_finite (d.angle) || !is_finite (d.density)
+      || !is_finite (d.restitution) || !is_finite (d.friction))
+    return CAROM_ERR_NOT_FINITE;
+  if (!is_moderate (d.x) || !is_moderate (d.y) || !is_moderate (d.angle) || d.restitution > 1.0
+      || (d.kind != CAROM_SHAPE_CIRCLE && d.kind != CAROM_SHAPE_POLYGON))
+    return CAROM_ERR_BAD_ARGUMENT;
+  if (d.density == 0.0)
+    return CAROM_ERR_BAD_DENSITY;
+  memset (part, 0, sizeof *part);
+  part->density = d.density > 0.0 ? d.density : body_def->density;
+  part->restitution = d.restitution;
+  part->friction = d.friction;
+  if (d.kind == CAROM_SHAPE_CIRCLE)
     {
-      double t = 2.0 * CAROM_PI * i / n;
-      xy[2 * i] = radius * cos (t);
-      xy[2 * i + 1] = radius * sin (t);
+      st = check_radius (d.radius);
+      if (st != CAROM_OK)
+        return st;
+      shape_init_circle (&part->s, d.radius);
+      part->center = v2 (d.x, d.y);
+      return CAROM_OK;
     }
-  /* eq. 3.6: I = m l^2 / 24 (1 + 3 cot^2(pi / n)), with m = area at unit
-   * density; area = n l^2 / 4 cot(pi / n) */
-  cot = 1.0 / tan (CAROM_PI / n);
-  area = 0.25 * n * side * side * cot;
-  unit_inertia = area * side * side / 24.0 * (1.0 + 3.0 * cot * cot);
-  st = add_polygon_shape (world, def, xy, n, &unit_inertia, id);
-  mem_free (&world->allocator, xy, (size_t) n * 2 * sizeof (double));
-  return st;
+  st = polygon_validate (d.xy, d.count);
+  if (st != CAROM_OK)
+    return st;
+  c = cos (d.angle), s = sin (d.angle);
+  for (i = 0; i < d.count; ++i)
+    {
+      double x = d.xy[2 * i], y = d.xy[2 * i + 1];
+      xy[2 * i] = d.x + (c * x - s * y);
+      xy[2 * i + 1] = d.y + (s * x + c * y);
+    }
+  /* placed, it must still be a valid polygon: far out, rounding can merge
+   * vertices (it cannot leave the range: |x| <= 1e100 and sizes < 1e60) */
+  st = polygon_validate (xy, d.count);
+  if (st != CAROM_OK)
+    return st;
+  return shape_init_polygon (&part->s, &world->allocator, xy, d.count, &part->center);
+}
+
+carom_status carom_world_add_compound (carom_world *world, const carom_body_def *def, const carom_shape_def *shapes,
+                                       int32_t count, carom_body_id *id)
+{
+  carom_body_def defaults;
+  shape_part *parts = NULL;
+  double *xy = NULL;
+  shape s;
+  vec2 centroid; /* the union's centre of mass goes to def->x, y */
+  int32_t i, built = 0;
+  carom_status st = begin_add (world, &def, &defaults);
+  if (st != CAROM_OK)
+    return st;
+  if (!shapes)
+    return CAROM_ERR_NULL_ARGUMENT;
+  if (count < 1 || count > CAROM_MAX_COMPOUND_SHAPES)
+    return CAROM_ERR_BAD_ARGUMENT;
+  parts = mem_alloc (&world->allocator, (size_t) count * sizeof (shape_part));
+  xy = mem_alloc (&world->allocator, (size_t) CAROM_MAX_POLYGON_VERTICES * 2 * sizeof (double));
+  st = parts && xy ? CAROM_OK : CAROM_ERR_OUT_OF_MEMORY;
+  for (i = 0; i < count && st == CAROM_OK; ++i)
+    {
+      st = build_part (world, def, &shapes[i], &parts[i], xy);
+      built += st == CAROM_OK;
+    }
+  if (st == CAROM_OK)
+    st = shape_init_compound (&s, &world->allocator, parts, count, &centroid);
+  if (st != CAROM_OK)
+    for (i = 0; i < built; ++i)
+      shape_destroy (&parts[i].s, &world->allocator);
+  mem_free (&world->allocator, parts, (size_t) count * sizeof (shape_part));
+  mem_free (&world->allocator, xy, (size_t) CAROM_MAX_POLYGON_VERTICES * 2 * sizeof (double));
+  if (st != CAROM_OK)
+    return st;
+  return finish_add (world, def, &s, id);
 }
 
 carom_status carom_world_remove_body (carom_world *world, carom_body_id id)
@@ -601,6 +690,80 @@ carom_status carom_body_get_vertices (const carom_world *world, carom_body_id id
       xy[2 * i] = v.x;
       xy[2 * i + 1] = v.y;
     }
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_shape_count (const carom_world *world, carom_body_id id, int32_t *count)
+{
+  const body *b;
+  LOOKUP (world, id, b);
+  if (count)
+    *count = shape_part_count (&b->shape);
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_shape_geometry (const carom_world *world, carom_body_id id, int32_t index,
+                                            carom_shape_kind *kind, double *x, double *y, double *radius, double *xy,
+                                            int32_t capacity, int32_t *count)
+{
+  const body *b;
+  const shape *s;
+  vec2 center;
+  xform t;
+  int32_t i;
+  LOOKUP (world, id, b);
+  if (index < 0 || index >= shape_part_count (&b->shape) || capacity < 0)
+    return CAROM_ERR_BAD_ARGUMENT;
+  if (xy == NULL && capacity > 0)
+    return CAROM_ERR_NULL_ARGUMENT;
+  s = shape_part_at (&b->shape, index, &center);
+  t.p = b->p;
+  t.q = b->q;
+  center = xform_apply (t, center);
+  if (kind)
+    *kind = s->kind;
+  if (x)
+    *x = center.x;
+  if (y)
+    *y = center.y;
+  if (radius)
+    *radius = s->kind == CAROM_SHAPE_CIRCLE ? s->radius : s->bound_radius;
+  if (count)
+    *count = s->kind == CAROM_SHAPE_POLYGON ? s->count : 0;
+  if (s->kind == CAROM_SHAPE_POLYGON)
+    for (i = 0; i < s->count && i < capacity; ++i)
+      {
+        vec2 v = xform_apply (t, s->vertices[i]);
+        xy[2 * i] = v.x;
+        xy[2 * i + 1] = v.y;
+      }
+  return CAROM_OK;
+}
+
+carom_status carom_body_get_shape_material (const carom_world *world, carom_body_id id, int32_t index,
+                                            double *density, double *restitution, double *friction)
+{
+  const body *b;
+  double e, mu, rho;
+  LOOKUP (world, id, b);
+  if (index < 0 || index >= shape_part_count (&b->shape))
+    return CAROM_ERR_BAD_ARGUMENT;
+  e = b->restitution, mu = b->friction, rho = b->density;
+  if (b->shape.kind == CAROM_SHAPE_COMPOUND)
+    {
+      const shape_part *p = &b->shape.parts[index];
+      rho = p->density;
+      if (p->restitution >= 0.0)
+        e = p->restitution;
+      if (p->friction >= 0.0)
+        mu = p->friction;
+    }
+  if (density)
+    *density = rho;
+  if (restitution)
+    *restitution = e >= 0.0 ? e : world->def.restitution;
+  if (friction)
+    *friction = mu >= 0.0 ? mu : world->def.friction;
   return CAROM_OK;
 }
 

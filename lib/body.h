@@ -16,6 +16,7 @@ typedef struct body {
   double w;
   /* mass properties; statics have zero inverses and so never move */
   double mass, inertia, inv_mass, inv_inertia;
+  double density;               /* as given (a compound's parts keep their own) */
   double restitution, friction; /* as given; < 0 means the world default */
   carom_body_type type;
   int32_t alive;

@@ -82,6 +82,8 @@ static int build_table (carom_world *world)
 typedef struct pair_context {
   double restitution, friction, slop, margin;
   double reuse_lin, reuse_ang; /* manifold reuse tolerance (0: never) */
+  const convex_piece *pieces_a, *pieces_b; /* a pair with a compound: the
+                                              pieces collide_pieces takes */
 } pair_context;
 
 /* Where each point of a freshly computed manifold lies, in a's frame: a's
@@ -194,6 +196,47 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
     }
 }
 
+/* The convex pieces of a body for the narrow phase: a circle body's one
+ * circle is a piece (in `circle`), a polygon's and a compound's are its
+ * shape's. */
+static int32_t body_pieces (const body *B, const convex_piece **pieces, convex_piece *circle)
+{
+  if (B->shape.kind == CAROM_SHAPE_CIRCLE)
+    {
+      memset (circle, 0, sizeof *circle);
+      circle->radius = circle->bound_radius = B->shape.radius;
+      *pieces = circle;
+      return 1;
+    }
+  *pieces = B->shape.pieces;
+  return B->shape.piece_count;
+}
+
+/* Any two pieces, circles (count 0) or convex polygons, each placed by its
+ * body's pose. A circle against a polygon is tested the polygon first and
+ * the result turned round (the normal then turns with b's face: bit 31 of
+ * the feature, see reuse_manifold). */
+static void collide_pieces (const convex_piece *p, xform xa, const convex_piece *q, xform xb, double margin,
+                            manifold *m)
+{
+  int32_t k;
+  if (p->count == 0 && q->count == 0)
+    collide_circles (xform_apply (xa, p->center), p->radius, xform_apply (xb, q->center), q->radius, margin, m);
+  else if (q->count == 0)
+    collide_polygon_circle (p, xa, xform_apply (xb, q->center), q->radius, margin, m);
+  else if (p->count > 0)
+    collide_polygons_sat (p, xa, q, xb, margin, m);
+  else
+    {
+      collide_polygon_circle (q, xb, xform_apply (xa, p->center), p->radius, margin, m);
+      for (k = 0; k < m->count; ++k)
+        {
+          m->points[k].normal = v2_scale (m->points[k].normal, -1.0);
+          m->points[k].feature |= 0x80000000u;
+        }
+    }
+}
+
 /* The narrow phase for one pair of pieces, or last step's points moved
  * (reuse_manifold), then the contact. */
 static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, const pair_context *pc,
@@ -204,6 +247,8 @@ static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, i
   const contact *from = NULL;
   if (can_reuse && old >= 0 && reuse_manifold (&c->old[old], xa, xb, pc->reuse_lin, pc->reuse_ang, m))
     from = &c->old[old];
+  else if (pc->pieces_a)
+    collide_pieces (&pc->pieces_a[pa], xa, &pc->pieces_b[pb], xb, pc->margin, m);
   else if (pa < 0 && pb < 0 && world->bodies[a].shape.kind == CAROM_SHAPE_CIRCLE)
     collide_circles (xa.p, world->bodies[a].shape.radius, xb.p, world->bodies[b].shape.radius, pc->margin, m);
   else if (pb < 0 && world->bodies[b].shape.kind == CAROM_SHAPE_CIRCLE)
@@ -223,26 +268,65 @@ static double material (double own, double fallback)
   return own >= 0.0 ? own : fallback;
 }
 
+/* The contact's restitution and friction from its two sides' (< 0: the
+ * world default): the bouncier side wins (max); friction is the geometric
+ * mean. */
+static void mix_materials (const carom_world *world, double ea, double fa, double eb, double fb, pair_context *pc)
+{
+  ea = material (ea, world->def.restitution);
+  eb = material (eb, world->def.restitution);
+  fa = material (fa, world->def.friction);
+  fb = material (fb, world->def.friction);
+  pc->restitution = ea > eb ? ea : eb;
+  pc->friction = sqrt (fa * fb);
+  if (!isfinite (pc->friction))
+    pc->friction = sqrt (fa) * sqrt (fb); /* mu near the largest double: finite, so mu times 0 is 0 */
+}
+
+/* A pair with a compound body: every two pieces whose bounding circles
+ * come within the margin, each with its shapes' materials. */
+static void on_compound_pair (carom_world *world, int32_t a, int32_t b, pair_context *pc, xform xa, xform xb)
+{
+  const body *A = &world->bodies[a], *B = &world->bodies[b];
+  convex_piece ca, cb;
+  const convex_piece *P, *Q;
+  int32_t na = body_pieces (A, &P, &ca), nb = body_pieces (B, &Q, &cb), i, j;
+  int compound_a = A->shape.kind == CAROM_SHAPE_COMPOUND, compound_b = B->shape.kind == CAROM_SHAPE_COMPOUND;
+  manifold m;
+  pc->pieces_a = P;
+  pc->pieces_b = Q;
+  for (i = 0; i < na; ++i)
+    {
+      vec2 pc_center = xform_apply (xa, P[i].center);
+      double ea = compound_a ? material (P[i].restitution, A->restitution) : A->restitution;
+      double fa = compound_a ? material (P[i].friction, A->friction) : A->friction;
+      for (j = 0; j < nb; ++j)
+        {
+          vec2 qc = xform_apply (xb, Q[j].center);
+          if (v2_len (v2_sub (qc, pc_center)) > P[i].bound_radius + Q[j].bound_radius + pc->margin)
+            continue;
+          mix_materials (world, ea, fa, compound_b ? material (Q[j].restitution, B->restitution) : B->restitution,
+                         compound_b ? material (Q[j].friction, B->friction) : B->friction, pc);
+          pair_pieces (world, a, b, i, j, pc, xa, xb, &m, pc->reuse_lin > 0.0 && P[i].count > 0 && Q[j].count > 0);
+        }
+    }
+}
+
 /* contact.h */
 int contact_bodies_overlap (const body *A, const body *B)
 {
   xform xa, xb;
   manifold m;
-  int32_t i, j, k;
+  convex_piece ca, cb;
+  const convex_piece *pa, *pb;
+  int32_t i, j, k, na = body_pieces (A, &pa, &ca), nb = body_pieces (B, &pb, &cb);
   xa.p = A->p, xa.q = A->q;
   xb.p = B->p, xb.q = B->q;
-  for (i = 0; i < (A->shape.kind == CAROM_SHAPE_CIRCLE ? 1 : A->shape.piece_count); ++i)
-    for (j = 0; j < (B->shape.kind == CAROM_SHAPE_CIRCLE ? 1 : B->shape.piece_count); ++j)
+  for (i = 0; i < na; ++i)
+    for (j = 0; j < nb; ++j)
       {
         m.count = 0;
-        if (A->shape.kind == CAROM_SHAPE_CIRCLE && B->shape.kind == CAROM_SHAPE_CIRCLE)
-          collide_circles (xa.p, A->shape.radius, xb.p, B->shape.radius, 0.0, &m);
-        else if (B->shape.kind == CAROM_SHAPE_CIRCLE)
-          collide_polygon_circle (&A->shape.pieces[i], xa, xb.p, B->shape.radius, 0.0, &m);
-        else if (A->shape.kind == CAROM_SHAPE_CIRCLE)
-          collide_polygon_circle (&B->shape.pieces[j], xb, xa.p, A->shape.radius, 0.0, &m);
-        else
-          collide_polygons_sat (&A->shape.pieces[i], xa, &B->shape.pieces[j], xb, 0.0, &m);
+        collide_pieces (&pa[i], xa, &pb[j], xb, 0.0, &m);
         for (k = 0; k < m.count; ++k)
           if (m.points[k].depth >= 0.0)
             return 1;
@@ -283,13 +367,14 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
   pair_context pc;
   manifold m;
   xform xa, xb;
-  double ea, eb, fa, fb;
   int32_t i, j;
   /* order: polygon before circle, else lower slot first, so the normal
    * convention of each narrow-phase test holds and the result does not
-   * depend on the broad phase's order */
-  if ((world->bodies[a].shape.kind == CAROM_SHAPE_CIRCLE && world->bodies[b].shape.kind == CAROM_SHAPE_POLYGON)
-      || (world->bodies[a].shape.kind == world->bodies[b].shape.kind && a > b))
+   * depend on the broad phase's order (with a compound: lower slot first,
+   * collide_pieces turns what needs turning) */
+  carom_shape_kind ka = world->bodies[a].shape.kind, kb = world->bodies[b].shape.kind;
+  int compound = ka == CAROM_SHAPE_COMPOUND || kb == CAROM_SHAPE_COMPOUND;
+  if (compound ? a > b : (ka == CAROM_SHAPE_CIRCLE && kb == CAROM_SHAPE_POLYGON) || (ka == kb && a > b))
     {
       int32_t t = a;
       a = b;
@@ -308,16 +393,7 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
    * or a kinematic one at rest): nothing to detect or solve */
   if (!can_move (A) && !can_move (B))
     return;
-  /* combining rule: the bouncier body wins (max); friction is the
-   * geometric mean */
-  ea = material (A->restitution, world->def.restitution);
-  eb = material (B->restitution, world->def.restitution);
-  fa = material (A->friction, world->def.friction);
-  fb = material (B->friction, world->def.friction);
-  pc.restitution = ea > eb ? ea : eb;
-  pc.friction = sqrt (fa * fb);
-  if (!isfinite (pc.friction))
-    pc.friction = sqrt (fa) * sqrt (fb); /* mu near the largest double: finite, so mu times 0 is 0 */
+  mix_materials (world, A->restitution, A->friction, B->restitution, B->friction, &pc);
   pc.slop = world->def.slop * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   /* speculative margin: pairs that can close their gap within this step
    * are contacts now, so impacts are met before the bodies overlap */
@@ -325,9 +401,15 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
               + body_reach (B, ctx->dt, ctx->accel, ctx->continuous || A->bullet);
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
+  pc.pieces_a = pc.pieces_b = NULL;
   xa.p = A->p, xa.q = A->q;
   xb.p = B->p, xb.q = B->q;
 
+  if (compound)
+    {
+      on_compound_pair (world, a, b, &pc, xa, xb);
+      return;
+    }
   if (A->shape.kind == CAROM_SHAPE_CIRCLE)
     {
       pair_pieces (world, a, b, -1, -1, &pc, xa, xb, &m, 0);

@@ -51,6 +51,18 @@ static carom_body_def body_defaults (void)
   return d;
 }
 
+static carom_shape_def shape_defaults (void)
+{
+  carom_shape_def d;
+  memset (&d, 0, sizeof d);
+  d.size = sizeof d;
+  d.kind = CAROM_SHAPE_CIRCLE;
+  d.density = -1.0;
+  d.restitution = -1.0;
+  d.friction = -1.0;
+  return d;
+}
+
 carom_status carom_world_def_init (carom_world_def *def, uint32_t size)
 {
   carom_world_def d = world_defaults ();
@@ -61,6 +73,12 @@ carom_status carom_body_def_init (carom_body_def *def, uint32_t size)
 {
   carom_body_def d = body_defaults ();
   return init_prefix (def, size, &d, sizeof d, BODY_DEF_SIZE_0_1);
+}
+
+carom_status carom_shape_def_init (carom_shape_def *def, uint32_t size)
+{
+  carom_shape_def d = shape_defaults ();
+  return init_prefix (def, size, &d, sizeof d, sizeof d);
 }
 
 carom_status world_def_import (const carom_world_def *in, carom_world_def *out)
@@ -83,4 +101,10 @@ carom_status body_def_import (const carom_body_def *in, carom_body_def *out)
   st = import (in, in->size, out, sizeof *out, BODY_DEF_SIZE_0_1);
   out->size = sizeof *out;
   return st;
+}
+
+carom_status shape_def_import (const carom_shape_def *in, carom_shape_def *out)
+{
+  *out = shape_defaults ();
+  return import (in, in->size, out, sizeof *out, sizeof *out);
 }

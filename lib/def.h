@@ -19,5 +19,7 @@
  * [0.1 size, this library's size]. */
 carom_status world_def_import (const carom_world_def *in, carom_world_def *out);
 carom_status body_def_import (const carom_body_def *in, carom_body_def *out);
+/* `in` must not be NULL (a compound's shapes); its size must be 0.2's. */
+carom_status shape_def_import (const carom_shape_def *in, carom_shape_def *out);
 
 #endif

@@ -24,22 +24,30 @@ static void draw_body (const carom_world *world, int32_t slot, const carom_debug
 {
   const body *b = &world->bodies[slot];
   carom_body_id id = body_id_of (world, slot);
-  if (b->shape.kind == CAROM_SHAPE_CIRCLE)
+  xform x;
+  int32_t i, k;
+  x.p = b->p, x.q = b->q;
+  for (k = 0; k < shape_part_count (&b->shape); ++k)
     {
-      if (d->circle)
-        d->circle (b->p.x, b->p.y, b->shape.radius, b->angle, id, d->user);
-    }
-  else if (d->polygon)
-    {
-      xform x;
-      int32_t i;
-      x.p = b->p, x.q = b->q;
-      for (i = 0; i < b->shape.count; ++i)
+      vec2 c;
+      const shape *s = shape_part_at (&b->shape, k, &c);
+      if (s->kind == CAROM_SHAPE_CIRCLE)
         {
-          vec2 v = xform_apply (x, b->shape.vertices[i]);
-          xy[2 * i] = v.x, xy[2 * i + 1] = v.y;
+          if (d->circle)
+            {
+              c = xform_apply (x, c);
+              d->circle (c.x, c.y, s->radius, b->angle, id, d->user);
+            }
         }
-      d->polygon (xy, b->shape.count, id, d->user);
+      else if (d->polygon)
+        {
+          for (i = 0; i < s->count; ++i)
+            {
+              vec2 v = xform_apply (x, s->vertices[i]);
+              xy[2 * i] = v.x, xy[2 * i + 1] = v.y;
+            }
+          d->polygon (xy, s->count, id, d->user);
+        }
     }
 }
 

@@ -71,6 +71,34 @@ static int ray_polygon (const shape *s, vec2 p0, vec2 d, double best, double *t,
   return hit;
 }
 
+/* Where the segment enters the body first (any of a compound's shapes). */
+static int ray_body (const body *b, vec2 p0, vec2 d, double best, double *t, vec2 *n)
+{
+  xform x;
+  vec2 q0, qd;
+  int32_t i, found = 0;
+  if (b->shape.kind == CAROM_SHAPE_CIRCLE)
+    return ray_circle (p0, d, b->p, b->shape.radius, best, t, n);
+  /* in the body's frame, the normal back to the world's */
+  x.p = b->p, x.q = b->q;
+  q0 = xform_apply_inv (x, p0);
+  qd = rot2_apply_inv (b->q, d);
+  for (i = 0; i < shape_part_count (&b->shape); ++i)
+    {
+      vec2 c;
+      const shape *s = shape_part_at (&b->shape, i, &c);
+      if (s->kind == CAROM_SHAPE_CIRCLE ? ray_circle (q0, qd, c, s->radius, best, t, n)
+                                         : ray_polygon (s, q0, qd, best, t, n))
+        {
+          best = *t;
+          found = 1;
+        }
+    }
+  if (found)
+    *n = rot2_apply (b->q, *n);
+  return found;
+}
+
 carom_status carom_world_cast_ray (const carom_world *world, double x0, double y0, double x1, double y1,
                                    uint32_t mask, carom_ray_hit *hit)
 {
@@ -96,17 +124,7 @@ carom_status carom_world_cast_ray (const carom_world *world, double x0, double y
       int found;
       if (!b->alive || !in_mask (b, mask) || !boxes_overlap (b, lo, hi))
         continue;
-      if (b->shape.kind == CAROM_SHAPE_CIRCLE)
-        found = ray_circle (p0, d, b->p, b->shape.radius, best, &t, &n);
-      else
-        {
-          /* in the body's frame, the normal back to the world's */
-          xform x;
-          x.p = b->p, x.q = b->q;
-          found = ray_polygon (&b->shape, xform_apply_inv (x, p0), rot2_apply_inv (b->q, d), best, &t, &n);
-          if (found)
-            n = rot2_apply (b->q, n);
-        }
+      found = ray_body (b, p0, d, best, &t, &n);
       if (!found)
         continue;
       best = t;
@@ -176,8 +194,17 @@ int body_contains (const body *b, vec2 p)
     return v2_len2 (v2_sub (p, b->p)) <= b->shape.radius * b->shape.radius;
   {
     xform x;
+    vec2 q, c;
+    int32_t i;
     x.p = b->p, x.q = b->q;
-    return polygon_contains (&b->shape, xform_apply_inv (x, p));
+    q = xform_apply_inv (x, p);
+    for (i = 0; i < shape_part_count (&b->shape); ++i)
+      {
+        const shape *s = shape_part_at (&b->shape, i, &c);
+        if (s->kind == CAROM_SHAPE_CIRCLE ? v2_len2 (v2_sub (q, c)) <= s->radius * s->radius : polygon_contains (s, q))
+          return 1;
+      }
+    return 0;
   }
 }
 

@@ -38,6 +38,9 @@ enum {
   OPT_GROUP = 1u << 14
 };
 #define OPT_MATERIAL (OPT_RESTITUTION | OPT_FRICTION)
+/* a shape inside a compound: where it sits in the body, its density and
+ * material */
+#define OPT_PART (OPT_AT | OPT_ANGLE | OPT_DENSITY | OPT_MATERIAL)
 #define OPT_BODY                                                                                                       \
   (OPT_AT | OPT_ANGLE | OPT_VELOCITY | OPT_SPIN | OPT_DENSITY | OPT_MATERIAL | OPT_STATIC | OPT_FIXED | OPT_BULLET     \
    | OPT_KINEMATIC | OPT_SENSOR | OPT_CATEGORY | OPT_MASK | OPT_GROUP)
@@ -86,6 +89,20 @@ typedef struct scene_parser {
   unsigned opts;             /* options given */
   carom_body_def body;       /* options applied to the defaults */
   carom_body_id last;        /* the body the line added */
+
+  /* an open `compound` block: its body def and line, its shapes so far
+   * (polygon vertices in part_xy, at part_first[i]), and, in the first
+   * pass, a world to try the shapes in */
+  int in_compound;
+  int32_t compound_line;
+  carom_body_def compound;
+  unsigned compound_opts;    /* its options (fixed, bullet: applied at end) */
+  carom_shape_def *parts;
+  int32_t *part_first;
+  int32_t part_count, part_cap, first_cap;
+  double *part_xy;
+  int32_t xy_count, xy_cap;
+  carom_world *trial;
 
   /* effects set by statements, applied once the world exists */
   double central[4];         /* x, y, gm, softening */
@@ -422,6 +439,181 @@ static carom_status scene_do_polygon (scene_parser *p)
   return scene_added (p, carom_world_add_polygon (p->world, &p->body, p->num, n, &p->last));
 }
 
+/* ------------------------------------------------------------ compounds */
+
+static carom_status scene_do_compound (scene_parser *p)
+{
+  if (p->in_compound)
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "compound: the compound of line %ld has no 'end' yet",
+                       (long) p->compound_line);
+  p->in_compound = 1;
+  p->compound_line = p->line;
+  p->compound = p->body;
+  p->compound_opts = p->opts;
+  p->part_count = p->xy_count = 0;
+  return CAROM_OK;
+}
+
+/* The compound's shapes with their vertex pointers set (part_xy may have
+ * moved since each was added). */
+static void scene_part_pointers (scene_parser *p)
+{
+  int32_t i;
+  for (i = 0; i < p->part_count; ++i)
+    p->parts[i].xy = p->parts[i].kind == CAROM_SHAPE_POLYGON ? p->part_xy + p->part_first[i] : NULL;
+}
+
+/* Add the compound of shapes [0, count) to `world` (and, for the trial
+ * world, remove it again). */
+static carom_status scene_add_compound (scene_parser *p, carom_world *world, int32_t first, int32_t count,
+                                        carom_body_id *id)
+{
+  carom_body_id local;
+  carom_status s;
+  scene_part_pointers (p);
+  s = carom_world_add_compound (world, &p->compound, p->parts + first, count, &local);
+  if (s == CAROM_OK && world == p->trial)
+    carom_world_remove_body (world, local);
+  if (id)
+    *id = local;
+  return s;
+}
+
+/* In the first pass, whether the world would take `count` shapes from
+ * `first` as a body: an empty world made once for these trials. */
+static carom_status scene_try_compound (scene_parser *p, int32_t first, int32_t count)
+{
+  carom_status s;
+  if (!p->trial)
+    {
+      s = carom_world_init (&p->trial, &p->def);
+      if (s != CAROM_OK)
+        return s;
+    }
+  return scene_add_compound (p, p->trial, first, count, NULL);
+}
+
+/* A shape line inside a compound block: its def from the line's numbers and
+ * options, polygon vertices (a box's and a regular polygon's made here)
+ * appended to part_xy. */
+static carom_status scene_do_part (scene_parser *p)
+{
+  carom_shape_def *d;
+  int32_t n = 0, i;
+  const char *what = p->tok[0];
+  carom_status s = CAROM_OK;
+  if (p->part_count >= CAROM_MAX_COMPOUND_SHAPES)
+    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "%s: a compound has at most %d shapes", what,
+                       CAROM_MAX_COMPOUND_SHAPES);
+  if (!mem_reserve (&p->allocator, (void **) &p->parts, &p->part_cap, p->part_count + 1, sizeof *p->parts)
+      || !mem_reserve (&p->allocator, (void **) &p->part_first, &p->first_cap, p->part_count + 1,
+                       sizeof *p->part_first))
+    return scene_fail (p, CAROM_ERR_OUT_OF_MEMORY, "out of memory");
+  d = &p->parts[p->part_count];
+  carom_shape_def_init (d, sizeof *d);
+  d->x = p->body.x, d->y = p->body.y, d->angle = p->body.angle;
+  if (p->opts & OPT_DENSITY)
+    d->density = p->body.density;
+  d->restitution = p->body.restitution;
+  d->friction = p->body.friction;
+  p->part_first[p->part_count] = p->xy_count;
+  if (strcmp (what, "circle") == 0)
+    {
+      s = scene_positive (p, p->num[0], "radius R", CAROM_ERR_BAD_SIZE);
+      d->radius = p->num[0];
+    }
+  else
+    {
+      d->kind = CAROM_SHAPE_POLYGON;
+      if (strcmp (what, "box") == 0)
+        {
+          n = 4;
+          s = scene_positive (p, p->num[0], "width W", CAROM_ERR_BAD_SIZE);
+          if (s == CAROM_OK)
+            s = scene_positive (p, p->num[1], "height H", CAROM_ERR_BAD_SIZE);
+        }
+      else if (strcmp (what, "regular") == 0)
+        {
+          if (p->num[0] < 3)
+            s = scene_count (p, p->num[0], "N", 3, CAROM_MAX_POLYGON_VERTICES, CAROM_ERR_TOO_FEW_VERTICES, &n);
+          else
+            s = scene_count (p, p->num[0], "N", 3, CAROM_MAX_POLYGON_VERTICES, CAROM_ERR_TOO_MANY_VERTICES, &n);
+          if (s == CAROM_OK)
+            s = scene_positive (p, p->num[1], "side length", CAROM_ERR_BAD_SIZE);
+        }
+      else
+        {
+          n = p->num_count / 2;
+          if (p->num_count % 2)
+            return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "polygon: vertices come in X Y pairs, got %ld numbers",
+                               (long) p->num_count);
+          if (n > CAROM_MAX_POLYGON_VERTICES)
+            return scene_fail (p, CAROM_ERR_TOO_MANY_VERTICES, "polygon: at most %d vertices, got %ld",
+                               CAROM_MAX_POLYGON_VERTICES, (long) n);
+        }
+      if (s != CAROM_OK)
+        return s;
+      if (!mem_reserve (&p->allocator, (void **) &p->part_xy, &p->xy_cap, p->xy_count + 2 * n, sizeof *p->part_xy))
+        return scene_fail (p, CAROM_ERR_OUT_OF_MEMORY, "out of memory");
+      for (i = 0; i < n; ++i)
+        {
+          double *v = p->part_xy + p->xy_count + 2 * i, sx = 0.5 * p->num[0], sy = 0.5 * p->num[1];
+          if (strcmp (what, "box") == 0)
+            {
+              /* counter-clockwise from the lower left corner, as add_box */
+              v[0] = (i == 0 || i == 3) ? -sx : sx;
+              v[1] = i < 2 ? -sy : sy;
+            }
+          else if (strcmp (what, "regular") == 0)
+            {
+              /* as add_regular: circumradius l / (2 sin(pi / n)), one vertex on +x */
+              double r = p->num[1] / (2.0 * sin (CAROM_PI / n)), t = 2.0 * CAROM_PI * i / n;
+              v[0] = r * cos (t);
+              v[1] = r * sin (t);
+            }
+          else
+            v[0] = p->num[2 * i], v[1] = p->num[2 * i + 1];
+        }
+      d->count = n;
+      p->xy_count += 2 * n;
+    }
+  if (s != CAROM_OK)
+    return s;
+  p->part_count++;
+  if (!p->world)
+    {
+      /* the world's verdict on this shape alone, on its own line */
+      s = scene_try_compound (p, p->part_count - 1, 1);
+      if (s != CAROM_OK)
+        return scene_fail (p, s, "%s: %s", what, carom_status_string (s));
+    }
+  return CAROM_OK;
+}
+
+static carom_status scene_do_end (scene_parser *p)
+{
+  carom_status s;
+  if (!p->in_compound)
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "end: no compound to end");
+  p->in_compound = 0;
+  if (p->part_count == 0)
+    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "end: the compound of line %ld has no shapes",
+                       (long) p->compound_line);
+  p->opts = p->compound_opts;
+  if (!p->world)
+    {
+      s = scene_try_compound (p, 0, p->part_count);
+      if (s != CAROM_OK)
+        return scene_fail (p, s, "end: the compound of line %ld: %s", (long) p->compound_line,
+                           carom_status_string (s));
+      return CAROM_OK;
+    }
+  s = scene_add_compound (p, p->world, 0, p->part_count, &p->last);
+  if (s != CAROM_OK)
+    return scene_fail (p, s, "end: the compound of line %ld: %s", (long) p->compound_line, carom_status_string (s));
+  return scene_added (p, s);
+}
+
 static carom_status scene_do_central (scene_parser *p)
 {
   p->central[0] = p->num[0];
@@ -527,6 +719,20 @@ static const scene_statement scene_statements[] = {
   { "box", SCENE_BODY, 2, 2, OPT_BODY, 0, "box W H [options]", scene_do_box },
   { "regular", SCENE_BODY, 2, 2, OPT_BODY, 0, "regular N SIDE [options]", scene_do_regular },
   { "polygon", SCENE_BODY, 6, -1, OPT_BODY, 0, "polygon X1 Y1 X2 Y2 X3 Y3 ... [options]", scene_do_polygon },
+  { "compound", SCENE_BODY, 0, 0, OPT_BODY, 0, "compound [options], then its shapes, then end", scene_do_compound },
+  { "end", SCENE_BODY, 0, 0, 0, 0, "end", scene_do_end },
+};
+
+/* Inside a compound block: its shapes, with the options a shape takes. */
+static const scene_statement scene_part_statements[] = {
+  { "circle", SCENE_BODY, 1, 1, OPT_PART, 0, "circle R [at X Y] [density D] [restitution E] [friction MU]",
+    scene_do_part },
+  { "box", SCENE_BODY, 2, 2, OPT_PART, 0, "box W H [at X Y] [angle A] [density D] [restitution E] [friction MU]",
+    scene_do_part },
+  { "regular", SCENE_BODY, 2, 2, OPT_PART, 0, "regular N SIDE [at X Y] [angle A] [density D] ...", scene_do_part },
+  { "polygon", SCENE_BODY, 6, -1, OPT_PART, 0, "polygon X1 Y1 X2 Y2 X3 Y3 ... [at X Y] [angle A] [density D] ...",
+    scene_do_part },
+  { "end", SCENE_BODY, 0, 0, 0, 0, "end", scene_do_end },
 };
 
 /* ------------------------------------------------------------ dispatcher */
@@ -680,9 +886,20 @@ static carom_status scene_statement_run (scene_parser *p)
   const scene_statement *st = NULL;
   carom_status s;
   size_t i;
-  for (i = 0; i < sizeof scene_statements / sizeof scene_statements[0]; ++i)
-    if (strcmp (p->tok[0], scene_statements[i].word) == 0)
-      st = &scene_statements[i];
+  if (p->in_compound)
+    {
+      for (i = 0; i < sizeof scene_part_statements / sizeof scene_part_statements[0]; ++i)
+        if (strcmp (p->tok[0], scene_part_statements[i].word) == 0)
+          st = &scene_part_statements[i];
+      if (!st)
+        return scene_fail (p, CAROM_ERR_SCENE_SYNTAX,
+                           "'%s' inside the compound of line %ld (only circle, box, regular, polygon and end)",
+                           p->tok[0], (long) p->compound_line);
+    }
+  else
+    for (i = 0; i < sizeof scene_statements / sizeof scene_statements[0]; ++i)
+      if (strcmp (p->tok[0], scene_statements[i].word) == 0)
+        st = &scene_statements[i];
   if (!st)
     return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "unknown statement '%s'", p->tok[0]);
   if (p->world && st->kind == SCENE_SETTING)
@@ -774,6 +991,12 @@ static carom_status scene_pass (scene_parser *p, const char *text, size_t length
         ++end;
       at = end + 1;
     }
+  if (p->in_compound)
+    {
+      p->in_compound = 0;
+      p->line = p->compound_line;
+      return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "compound: no 'end' before the end of the file");
+    }
   p->line = 0;
   return CAROM_OK;
 }
@@ -783,6 +1006,10 @@ static void scene_parser_destroy (scene_parser *p)
   mem_free (&p->allocator, p->buf, (size_t) p->buf_cap);
   mem_free (&p->allocator, p->tok, (size_t) p->tok_cap * sizeof *p->tok);
   mem_free (&p->allocator, p->num, (size_t) p->num_cap * sizeof *p->num);
+  mem_free (&p->allocator, p->parts, (size_t) p->part_cap * sizeof *p->parts);
+  mem_free (&p->allocator, p->part_first, (size_t) p->first_cap * sizeof *p->part_first);
+  mem_free (&p->allocator, p->part_xy, (size_t) p->xy_cap * sizeof *p->part_xy);
+  carom_world_destroy (p->trial);
 }
 
 /* Start from the caller's settings, or the defaults. */

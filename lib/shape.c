@@ -520,6 +520,7 @@ carom_status shape_init_polygon (shape *s, const carom_allocator *a, const doubl
           s->vertices = NULL;
           return CAROM_ERR_OUT_OF_MEMORY;
         }
+      memset (s->pieces, 0, sizeof (convex_piece));
       s->piece_count = s->piece_alloc = 1;
       if (!flat)
         {
@@ -558,7 +559,21 @@ carom_status shape_init_polygon (shape *s, const carom_allocator *a, const doubl
 void shape_destroy (shape *s, const carom_allocator *a)
 {
   int32_t i;
-  if (!s || s->kind != CAROM_SHAPE_POLYGON)
+  if (!s)
+    return;
+  if (s->kind == CAROM_SHAPE_COMPOUND)
+    {
+      /* the pieces list shares the parts' vertices */
+      for (i = 0; i < s->part_count; ++i)
+        shape_destroy (&s->parts[i].s, a);
+      mem_free (a, s->parts, (size_t) s->part_count * sizeof (shape_part));
+      mem_free (a, s->pieces, (size_t) s->piece_alloc * sizeof (convex_piece));
+      s->parts = NULL;
+      s->pieces = NULL;
+      s->part_count = s->piece_count = 0;
+      return;
+    }
+  if (s->kind != CAROM_SHAPE_POLYGON)
     return;
   if (s->pieces)
     {
@@ -571,4 +586,152 @@ void shape_destroy (shape *s, const carom_allocator *a)
   s->vertices = NULL;
   s->pieces = NULL;
   s->piece_count = 0;
+}
+
+carom_status shape_init_box (shape *s, const carom_allocator *a, double width, double height)
+{
+  double xy[8];
+  vec2 centroid;
+  carom_status st;
+  xy[0] = -0.5 * width, xy[1] = -0.5 * height;
+  xy[2] = 0.5 * width, xy[3] = -0.5 * height;
+  xy[4] = 0.5 * width, xy[5] = 0.5 * height;
+  xy[6] = -0.5 * width, xy[7] = 0.5 * height;
+  st = shape_init_polygon (s, a, xy, 4, &centroid);
+  /* eq. 3.4: I = m (w^2 + h^2) / 12, here per unit density (m = w h) */
+  if (st == CAROM_OK)
+    s->unit_inertia = width * height * (width * width + height * height) / 12.0;
+  return st;
+}
+
+carom_status shape_init_regular (shape *s, const carom_allocator *a, int32_t n, double side)
+{
+  double *xy, radius, area, cot;
+  vec2 centroid;
+  int32_t i;
+  carom_status st;
+  xy = mem_alloc (a, (size_t) n * 2 * sizeof (double));
+  if (!xy)
+    return CAROM_ERR_OUT_OF_MEMORY;
+  /* circumradius of a regular n-gon with side l: l / (2 sin(pi / n)) */
+  radius = side / (2.0 * sin (CAROM_PI / n));
+  for (i = 0; i < n; ++i)
+    {
+      double t = 2.0 * CAROM_PI * i / n;
+      xy[2 * i] = radius * cos (t);
+      xy[2 * i + 1] = radius * sin (t);
+    }
+  st = polygon_validate (xy, n);
+  if (st == CAROM_OK)
+    st = shape_init_polygon (s, a, xy, n, &centroid);
+  mem_free (a, xy, (size_t) n * 2 * sizeof (double));
+  if (st != CAROM_OK)
+    return st;
+  /* eq. 3.6: I = m l^2 / 24 (1 + 3 cot^2(pi / n)), with m = area at unit
+   * density; area = n l^2 / 4 cot(pi / n) */
+  cot = 1.0 / tan (CAROM_PI / n);
+  area = 0.25 * n * side * side * cot;
+  s->unit_inertia = area * side * side / 24.0 * (1.0 + 3.0 * cot * cot);
+  return CAROM_OK;
+}
+
+/* Move a circle or polygon shape's geometry by d (its pieces with it). */
+static void shape_translate (shape *s, vec2 d)
+{
+  int32_t i, j;
+  for (i = 0; i < s->count; ++i)
+    s->vertices[i] = v2_add (s->vertices[i], d);
+  for (i = 0; i < s->piece_count; ++i)
+    {
+      convex_piece *p = &s->pieces[i];
+      if (p->vertices != s->vertices)
+        for (j = 0; j < p->count; ++j)
+          p->vertices[j] = v2_add (p->vertices[j], d);
+      p->center = v2_add (p->center, d);
+    }
+}
+
+carom_status shape_init_compound (shape *s, const carom_allocator *a, const shape_part *parts, int32_t count,
+                                  vec2 *centroid)
+{
+  double mass = 0.0, inertia = 0.0, area = 0.0, size = INFINITY, bound = 0.0;
+  vec2 c = v2 (0.0, 0.0), o = parts[0].center;
+  int32_t i, j, pieces = 0;
+  memset (s, 0, sizeof *s);
+  for (i = 0; i < count; ++i)
+    pieces += parts[i].s.kind == CAROM_SHAPE_CIRCLE ? 1 : parts[i].s.piece_count;
+  s->parts = mem_alloc (a, (size_t) count * sizeof (shape_part));
+  s->pieces = mem_alloc (a, (size_t) pieces * sizeof (convex_piece));
+  if (!s->parts || !s->pieces)
+    {
+      mem_free (a, s->parts, (size_t) count * sizeof (shape_part));
+      mem_free (a, s->pieces, (size_t) pieces * sizeof (convex_piece));
+      return CAROM_ERR_OUT_OF_MEMORY;
+    }
+  memcpy (s->parts, parts, (size_t) count * sizeof (shape_part));
+  s->kind = CAROM_SHAPE_COMPOUND;
+  s->part_count = count;
+  s->piece_alloc = s->piece_count = pieces;
+  /* the centre of mass, summed about the first part's centroid so that
+   * parts far from the caller's origin lose nothing to rounding */
+  for (i = 0; i < count; ++i)
+    {
+      double m = parts[i].density * parts[i].s.area;
+      mass += m;
+      c = v2_mad (c, m, v2_sub (parts[i].center, o));
+    }
+  c = v2_add (o, v2_scale (c, 1.0 / mass));
+  *centroid = c;
+  /* the parallel axis theorem: each part's inertia about its own centroid,
+   * plus its mass times the squared distance to the union's */
+  for (i = 0, pieces = 0; i < count; ++i)
+    {
+      shape_part *p = &s->parts[i];
+      double m = p->density * p->s.area;
+      vec2 d = v2_sub (p->center, c);
+      p->center = d;
+      inertia += p->density * p->s.unit_inertia + m * v2_dot (d, d);
+      area += p->s.area;
+      if (p->s.size < size)
+        size = p->s.size;
+      if (v2_len (d) + p->s.bound_radius > bound)
+        bound = v2_len (d) + p->s.bound_radius;
+      if (p->s.kind == CAROM_SHAPE_CIRCLE)
+        {
+          convex_piece *q = &s->pieces[pieces++];
+          memset (q, 0, sizeof *q);
+          q->center = d;
+          q->radius = q->bound_radius = p->s.radius;
+        }
+      else
+        {
+          shape_translate (&p->s, d);
+          for (j = 0; j < p->s.piece_count; ++j)
+            s->pieces[pieces++] = p->s.pieces[j];
+        }
+      for (j = pieces - (p->s.kind == CAROM_SHAPE_CIRCLE ? 1 : p->s.piece_count); j < pieces; ++j)
+        {
+          s->pieces[j].restitution = p->restitution;
+          s->pieces[j].friction = p->friction;
+        }
+    }
+  s->pieces_shared = 1;
+  s->mass = mass;
+  s->inertia = inertia;
+  s->area = area;
+  s->bound_radius = bound;
+  s->size = size;
+  return CAROM_OK;
+}
+
+void shape_mass (const shape *s, double density, double *mass, double *inertia)
+{
+  if (s->kind == CAROM_SHAPE_COMPOUND)
+    {
+      *mass = s->mass;
+      *inertia = s->inertia;
+      return;
+    }
+  *mass = density * s->area;
+  *inertia = density * s->unit_inertia;
 }

@@ -93,6 +93,7 @@ int main (int argc, char **argv)
 {
   static const struct { const char *file; int steps; } files[] = {
     { "pyramid.scene", 300 }, { "rain.scene", 300 }, { "gas.scene", 600 }, { "thesis.scene", 600 },
+    { "compound.scene", 600 },
   };
   const char *dir = argc > 1 ? argv[1] : "scenes";
   carom_scene_error err;

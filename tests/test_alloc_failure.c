@@ -222,6 +222,7 @@ typedef enum step_kind {
   ADD_LATE_BOX,
   ADD_SENSOR,
   ADD_KINEMATIC,
+  ADD_COMPOUND,
   DETECT,
   UPDATE,
   REMOVE,
@@ -292,6 +293,19 @@ static carom_status add_body (carom_world *w, step_kind kind, carom_body_id *id)
     case ADD_KINEMATIC: /* sweeps into the regular polygon */
       d.type = CAROM_KINEMATIC, d.x = 6.0, d.y = 0.6, d.vx = -1.0;
       return carom_world_add_box (w, &d, 0.5, 1.0, id);
+    case ADD_COMPOUND: /* a disc, a U (pieces of its own) and a bar, landing left */
+      {
+        carom_shape_def parts[3];
+        int i;
+        for (i = 0; i < 3; ++i)
+          assert_status (carom_shape_def_init (&parts[i], sizeof parts[i]), CAROM_OK);
+        parts[0].radius = 0.4, parts[0].x = -1.0;
+        parts[1].kind = CAROM_SHAPE_POLYGON, parts[1].xy = u, parts[1].count = 8, parts[1].angle = 0.2;
+        parts[1].density = 0.5, parts[1].friction = 0.9;
+        parts[2].kind = CAROM_SHAPE_POLYGON, parts[2].xy = u, parts[2].count = 4, parts[2].x = -1.5;
+        d.x = -8.0, d.y = 1.2;
+        return carom_world_add_compound (w, &d, parts, 3, id);
+      }
     default:
       break;
     }
@@ -316,7 +330,7 @@ static carom_status do_step (scenario *sc, carom_world *w, step_kind kind)
       if (s == CAROM_OK)
         s = carom_body_apply_impulse (w, sc->box, 0.0, 0.1, 0.0, 0.5);
       return s;
-    case QUERY: /* queries, events and the debug draw allocate nothing */
+    case QUERY: /* queries, events, the debug draw and the shape getters allocate nothing */
       {
         carom_ray_hit hit;
         carom_body_id ids[8];
@@ -328,6 +342,21 @@ static carom_status do_step (scenario *sc, carom_world *w, step_kind kind)
         assert_true (carom_world_get_events (w, NULL, 0) >= 0);
         assert_status (carom_debug_draw_init (&draw, sizeof draw), CAROM_OK);
         assert_status (carom_world_draw (w, &draw), CAROM_OK);
+        {
+          /* and the shapes of every body, compounds included */
+          int32_t n = carom_world_get_bodies (w, ids, 8), i, count, k;
+          for (i = 0; i < n && i < 8; ++i)
+            {
+              double xy[16], density;
+              assert_status (carom_body_get_shape_count (w, ids[i], &count), CAROM_OK);
+              for (k = 0; k < count; ++k)
+                {
+                  assert_status (carom_body_get_shape_geometry (w, ids[i], k, NULL, NULL, NULL, NULL, xy, 8, NULL),
+                                 CAROM_OK);
+                  assert_status (carom_body_get_shape_material (w, ids[i], k, &density, NULL, NULL), CAROM_OK);
+                }
+            }
+        }
         if (w != sc->ref)
           assert_true (sc->alloc->calls == calls);
         return CAROM_OK;
@@ -359,7 +388,7 @@ static void reference_step (scenario *sc, step_kind kind)
 static const char *step_name (step_kind kind)
 {
   static const char *names[] = { "add ground", "add circle", "add box", "add regular", "add U",
-                                 "add late box", "add sensor", "add kinematic", "detect", "update", "remove",
+                                 "add late box", "add sensor", "add kinematic", "add compound", "detect", "update", "remove",
                                  "push", "query" };
   return names[kind];
 }
@@ -415,7 +444,8 @@ static int checked_call (scenario *sc, step_kind kind)
 static int run_scenario (checking_alloc *c, long k, int mode, carom_narrow_phase narrow, int32_t substeps,
                          int32_t *max_contacts)
 {
-  static const step_kind adds[] = { ADD_GROUND, ADD_CIRCLE, ADD_BOX, ADD_REGULAR, ADD_U, ADD_SENSOR, ADD_KINEMATIC };
+  static const step_kind adds[] = { ADD_GROUND, ADD_CIRCLE, ADD_BOX,    ADD_REGULAR,
+                                    ADD_U,      ADD_SENSOR, ADD_KINEMATIC, ADD_COMPOUND };
   scenario sc;
   carom_world_def def;
   carom_status s;
@@ -745,6 +775,7 @@ static void test_scene_file_out_of_memory (void **state)
 {
   (void) state;
   scene_sweep ("scenes/thesis.scene");
+  scene_sweep ("scenes/compound.scene"); /* compound blocks: their shapes, the trial world */
 }
 
 /* A def whose allocator has alloc but no free is refused before any

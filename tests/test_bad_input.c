@@ -1243,6 +1243,140 @@ static carom_status call_api (carom_world *w, const api_case *t, carom_body_id i
     }
 }
 
+/* carom_world_add_compound: each way a shape def can be wrong, refused
+ * with its status, the world unchanged and the id not written. */
+typedef enum shape_fault {
+  SF_NONE, SF_SIZE, SF_KIND, SF_RADIUS_ZERO, SF_RADIUS_NAN, SF_RADIUS_HUGE, SF_X_NAN, SF_X_HUGE, SF_ANGLE_INF,
+  SF_DENSITY_ZERO, SF_DENSITY_NAN, SF_RESTITUTION, SF_FRICTION_NAN, SF_XY_NULL, SF_FEW, SF_MANY, SF_CROSSING,
+  SF_REPEATED, SF_VERTEX_NAN, SF_MERGED
+} shape_fault;
+
+typedef struct compound_case {
+  const char *what;
+  shape_fault fault;
+  int32_t count;      /* shapes passed (the second one carries the fault) */
+  carom_status want;
+} compound_case;
+
+static const compound_case compound_cases[] = {
+  { "a shape def of the wrong size", SF_SIZE, 2, CAROM_ERR_BAD_STRUCT_SIZE },
+  { "a kind neither circle nor polygon", SF_KIND, 2, CAROM_ERR_BAD_ARGUMENT },
+  { "a circle of radius 0", SF_RADIUS_ZERO, 2, CAROM_ERR_BAD_SIZE },
+  { "a circle of radius NaN", SF_RADIUS_NAN, 2, CAROM_ERR_NOT_FINITE },
+  { "a circle of radius 1e61", SF_RADIUS_HUGE, 2, CAROM_ERR_BAD_SIZE },
+  { "a shape at x NaN", SF_X_NAN, 2, CAROM_ERR_NOT_FINITE },
+  { "a shape at x 2e100", SF_X_HUGE, 2, CAROM_ERR_BAD_ARGUMENT },
+  { "a shape turned by inf", SF_ANGLE_INF, 2, CAROM_ERR_NOT_FINITE },
+  { "a shape of density 0", SF_DENSITY_ZERO, 2, CAROM_ERR_BAD_DENSITY },
+  { "a shape of density NaN", SF_DENSITY_NAN, 2, CAROM_ERR_NOT_FINITE },
+  { "a shape of restitution 1.5", SF_RESTITUTION, 2, CAROM_ERR_BAD_ARGUMENT },
+  { "a shape of friction NaN", SF_FRICTION_NAN, 2, CAROM_ERR_NOT_FINITE },
+  { "a polygon without vertices", SF_XY_NULL, 2, CAROM_ERR_NULL_ARGUMENT },
+  { "a polygon of 2 vertices", SF_FEW, 2, CAROM_ERR_TOO_FEW_VERTICES },
+  { "a polygon of 1025 vertices", SF_MANY, 2, CAROM_ERR_TOO_MANY_VERTICES },
+  { "a polygon whose edges cross", SF_CROSSING, 2, CAROM_ERR_SELF_INTERSECTING },
+  { "a polygon with a repeated vertex", SF_REPEATED, 2, CAROM_ERR_REPEATED_VERTEX },
+  { "a polygon with a NaN vertex", SF_VERTEX_NAN, 2, CAROM_ERR_NOT_FINITE },
+  { "a polygon placed where its vertices merge", SF_MERGED, 2, CAROM_ERR_REPEATED_VERTEX },
+  { "no shapes", SF_NONE, 0, CAROM_ERR_BAD_ARGUMENT },
+  { "more than CAROM_MAX_COMPOUND_SHAPES", SF_NONE, CAROM_MAX_COMPOUND_SHAPES + 1, CAROM_ERR_BAD_ARGUMENT },
+};
+
+static void test_compound_calls_refuse_bad_input (void **state)
+{
+  static double square[] = { 0, 0, 1, 0, 1, 1, 0, 1 }, bow[] = { 0, 0, 1, 1, 1, 0, 0, 1 };
+  static double repeated[] = { 0, 0, 1, 0, 1, 0, 0, 1 }, nan_vertex[] = { 0, 0, 1, 0, 1, 1, 0, 1 };
+  static carom_shape_def shapes[CAROM_MAX_COMPOUND_SHAPES + 1];
+  carom_world *w = new_world (-10.0);
+  carom_body_def d;
+  carom_body_id id, stale;
+  carom_shape_kind kind = (carom_shape_kind) 7;
+  double x = 7, radius = 7, xy[8] = { 7 }, density = 7;
+  int32_t count = 7, i;
+  size_t k;
+  (void) state;
+  nan_vertex[5] = NAN;
+  add_ground (w, -0.5, 20.0, 1.0);
+  assert_status (carom_world_add_circle (w, NULL, 1.0, &stale), CAROM_OK);
+  assert_status (carom_world_remove_body (w, stale), CAROM_OK);
+  for (i = 0; i < CAROM_MAX_COMPOUND_SHAPES + 1; ++i)
+    {
+      assert_status (carom_shape_def_init (&shapes[i], sizeof shapes[i]), CAROM_OK);
+      shapes[i].radius = 0.5, shapes[i].x = i;
+    }
+  carom_body_def_init (&d, sizeof d);
+  d.y = 2.0;
+  for (k = 0; k < sizeof compound_cases / sizeof compound_cases[0]; ++k)
+    {
+      const compound_case *t = &compound_cases[k];
+      carom_shape_def saved = shapes[1];
+      carom_shape_def *f = &shapes[1];
+      uint64_t before = world_state_hash (w);
+      carom_status s;
+      switch (t->fault)
+        {
+        case SF_NONE: break;
+        case SF_SIZE: f->size = sizeof *f - 8; break;
+        case SF_KIND: f->kind = (carom_shape_kind) 2; break;
+        case SF_RADIUS_ZERO: f->radius = 0.0; break;
+        case SF_RADIUS_NAN: f->radius = NAN; break;
+        case SF_RADIUS_HUGE: f->radius = 1e61; break;
+        case SF_X_NAN: f->x = NAN; break;
+        case SF_X_HUGE: f->x = 2e100; break;
+        case SF_ANGLE_INF: f->angle = INFINITY; break;
+        case SF_DENSITY_ZERO: f->density = 0.0; break;
+        case SF_DENSITY_NAN: f->density = NAN; break;
+        case SF_RESTITUTION: f->restitution = 1.5; break;
+        case SF_FRICTION_NAN: f->friction = NAN; break;
+        case SF_XY_NULL: f->kind = CAROM_SHAPE_POLYGON, f->count = 4; break;
+        case SF_FEW: f->kind = CAROM_SHAPE_POLYGON, f->xy = square, f->count = 2; break;
+        case SF_MANY: f->kind = CAROM_SHAPE_POLYGON, f->xy = square, f->count = 1025; break;
+        case SF_CROSSING: f->kind = CAROM_SHAPE_POLYGON, f->xy = bow, f->count = 4; break;
+        case SF_REPEATED: f->kind = CAROM_SHAPE_POLYGON, f->xy = repeated, f->count = 4; break;
+        case SF_VERTEX_NAN: f->kind = CAROM_SHAPE_POLYGON, f->xy = nan_vertex, f->count = 4; break;
+        case SF_MERGED: f->kind = CAROM_SHAPE_POLYGON, f->xy = square, f->count = 4, f->x = 1e100; break;
+        }
+      id = 12345;
+      s = carom_world_add_compound (w, &d, shapes, t->count, &id);
+      shapes[1] = saved;
+      if (s != t->want)
+        fail_msg ("%s: returned %d (%s), wanted %d (%s)", t->what, (int) s, carom_status_string (s), (int) t->want,
+                  carom_status_string (t->want));
+      if (world_state_hash (w) != before || id != 12345)
+        fail_msg ("%s: refused, but the world or the id changed", t->what);
+    }
+  assert_status (carom_world_add_compound (NULL, &d, shapes, 2, &id), CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_world_add_compound (w, &d, NULL, 2, &id), CAROM_ERR_NULL_ARGUMENT);
+  d.density = 0.0; /* the body's density, which shapes of density < 0 take */
+  assert_status (carom_world_add_compound (w, &d, shapes, 2, &id), CAROM_ERR_BAD_DENSITY);
+  d.density = 1.0;
+  assert_status (carom_shape_def_init (NULL, sizeof shapes[0]), CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_shape_def_init (&shapes[0], 4), CAROM_ERR_BAD_STRUCT_SIZE);
+  assert_int_equal (carom_world_body_count (w), 1);
+  /* the getters: stale ids, bad indices, outputs untouched */
+  assert_status (carom_world_add_compound (w, &d, shapes, 2, &id), CAROM_OK);
+  assert_status (carom_body_get_shape_count (NULL, id, &count), CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_body_get_shape_count (w, stale, &count), CAROM_ERR_STALE_BODY);
+  assert_int_equal (count, 7);
+  assert_status (carom_body_get_shape_geometry (w, id, 2, &kind, &x, NULL, &radius, xy, 4, &count),
+                 CAROM_ERR_BAD_ARGUMENT);
+  assert_status (carom_body_get_shape_geometry (w, id, -1, &kind, &x, NULL, &radius, xy, 4, &count),
+                 CAROM_ERR_BAD_ARGUMENT);
+  assert_status (carom_body_get_shape_geometry (w, id, 0, &kind, &x, NULL, &radius, xy, -1, &count),
+                 CAROM_ERR_BAD_ARGUMENT);
+  assert_status (carom_body_get_shape_geometry (w, id, 0, &kind, &x, NULL, &radius, NULL, 4, &count),
+                 CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_body_get_shape_geometry (w, stale, 0, &kind, &x, NULL, &radius, xy, 4, &count),
+                 CAROM_ERR_STALE_BODY);
+  assert_status (carom_body_get_shape_geometry (NULL, id, 0, &kind, &x, NULL, &radius, xy, 4, &count),
+                 CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_body_get_shape_material (w, id, 2, &density, NULL, NULL), CAROM_ERR_BAD_ARGUMENT);
+  assert_status (carom_body_get_shape_material (w, stale, 0, &density, NULL, NULL), CAROM_ERR_STALE_BODY);
+  assert_status (carom_body_get_shape_material (NULL, id, 0, &density, NULL, NULL), CAROM_ERR_NULL_ARGUMENT);
+  assert_true (kind == (carom_shape_kind) 7 && x == 7 && radius == 7 && xy[0] == 7 && count == 7 && density == 7);
+  carom_world_destroy (w);
+}
+
 static void test_version_0_2_calls_refuse_bad_input (void **state)
 {
   carom_world *w = new_world (-10.0);
@@ -1388,6 +1522,7 @@ int main (void)
     cmocka_unit_test (test_scene_extremes),
     cmocka_unit_test (test_scene_error_struct_and_empty_text),
     cmocka_unit_test (test_version_0_2_calls_refuse_bad_input),
+    cmocka_unit_test (test_compound_calls_refuse_bad_input),
   };
   return cmocka_run_group_tests_name ("bad_input", tests, NULL, NULL);
 }

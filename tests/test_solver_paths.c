@@ -50,6 +50,21 @@ static carom_world *pile (void)
   carom_body_def_init (&d, sizeof d);
   d.x = 16.0, d.y = 2.0;
   assert_status (carom_world_add_polygon (w, &d, notch, 5, NULL), CAROM_OK);
+  {
+    /* two compounds, a dumbbell and the notch on a disc, landing on the pile */
+    carom_shape_def parts[2];
+    int k;
+    for (k = 0; k < 2; ++k)
+      assert_status (carom_shape_def_init (&parts[k], sizeof parts[k]), CAROM_OK);
+    parts[0].radius = 0.4, parts[0].x = -0.8;
+    parts[1].radius = 0.3, parts[1].x = 0.8, parts[1].friction = 0.1;
+    carom_body_def_init (&d, sizeof d);
+    d.x = -6.0, d.y = 10.0, d.spin = 1.0;
+    assert_status (carom_world_add_compound (w, &d, parts, 2, NULL), CAROM_OK);
+    parts[1].kind = CAROM_SHAPE_POLYGON, parts[1].xy = notch, parts[1].count = 5, parts[1].y = 0.5;
+    d.x = -4.0, d.y = 14.0;
+    assert_status (carom_world_add_compound (w, &d, parts, 2, NULL), CAROM_OK);
+  }
   return w;
 }
 

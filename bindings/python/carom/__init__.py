@@ -25,6 +25,10 @@ from ._native import lib as _lib
 
 __all__ = [
     "Body",
+    "Box",
+    "Circle",
+    "Polygon",
+    "ShapeInfo",
     "CaromError",
     "ClosedWorldError",
     "Contact",
@@ -49,6 +53,8 @@ library_path = _native.path
 
 #: Largest vertex count of one polygon (CAROM_MAX_POLYGON_VERTICES).
 MAX_POLYGON_VERTICES = _native.MAX_POLYGON_VERTICES
+#: Most shapes in one compound body (CAROM_MAX_COMPOUND_SHAPES).
+MAX_COMPOUND_SHAPES = _native.MAX_COMPOUND_SHAPES
 
 
 class Status(enum.IntEnum):
@@ -203,6 +209,65 @@ Contact = collections.namedtuple("Contact", "a b point normal depth")
 Contact.__doc__ = """A contact point: bodies a and b, the point (x, y), the unit
 normal (nx, ny) from a to b, and the penetration depth (negative when the
 bodies are apart but within the contact margin)."""
+
+
+class Circle:
+    """A circle of a compound body (World.add_compound), centred on `offset`
+    in body coordinates. density, restitution and friction default to the
+    body's (None)."""
+
+    def __init__(self, radius, offset=(0.0, 0.0), density=None, restitution=None, friction=None):
+        self.radius = _finite(radius, "radius")
+        self.offset = _pair(offset, "offset")
+        self.density, self.restitution, self.friction = density, restitution, friction
+
+    def _fill(self, d, keep):
+        d.kind = _native.SHAPE_CIRCLE
+        d.x, d.y = self.offset
+        d.radius = self.radius
+
+
+class Polygon:
+    """A simple polygon (convex or concave, either winding) of a compound
+    body: its points in body coordinates, turned by `angle` and then moved by
+    `offset`. density, restitution and friction as Circle."""
+
+    def __init__(self, points, offset=(0.0, 0.0), angle=0.0, density=None, restitution=None,
+                 friction=None):
+        self.points = [_pair(p, "a polygon vertex") for p in points]
+        self.offset = _pair(offset, "offset")
+        self.angle = _finite(angle, "angle")
+        self.density, self.restitution, self.friction = density, restitution, friction
+
+    def _fill(self, d, keep):
+        xy = (ctypes.c_double * max(2 * len(self.points), 1))()
+        for k, (px, py) in enumerate(self.points):
+            xy[2 * k], xy[2 * k + 1] = px, py
+        keep.append(xy)  # alive until the C call returns
+        d.kind = _native.SHAPE_POLYGON
+        d.x, d.y = self.offset
+        d.angle = self.angle
+        d.xy = ctypes.cast(xy, _native.c_double_p)
+        d.count = min(len(self.points), 2**31 - 1)
+
+
+class Box(Polygon):
+    """A width x height box of a compound body, centred on `offset`, turned
+    by `angle`."""
+
+    def __init__(self, width, height, offset=(0.0, 0.0), angle=0.0, density=None,
+                 restitution=None, friction=None):
+        w, h = 0.5 * _finite(width, "width"), 0.5 * _finite(height, "height")
+        Polygon.__init__(self, [(-w, -h), (w, -h), (w, h), (-w, h)], offset, angle, density,
+                         restitution, friction)
+
+
+#: One shape of a body as Body.shapes reports it, in world coordinates:
+#: kind ('circle' or 'polygon'), center (a polygon's centroid), radius (a
+#: polygon's farthest vertex from it), vertices ([] for a circle), and the
+#: density, restitution and friction its contacts use.
+ShapeInfo = collections.namedtuple(
+    "ShapeInfo", "kind center radius vertices density restitution friction")
 
 
 class World:
@@ -536,6 +601,29 @@ class World:
         return self._add("add_regular",
                          lambda h, d, i: _lib.carom_world_add_regular(h, d, count, s, i), options)
 
+    def add_compound(self, shapes, **options):
+        """A body made of several shapes (Circle, Box, Polygon) given in body
+        coordinates, each with its own density and material: the centre of
+        mass of their union is placed at (x, y) and the body turned by
+        `angle` about it; mass and inertia are the union's (parallel axis
+        theorem). Options as add_circle (density: the shapes' default)."""
+        shapes = list(shapes)
+        for sh in shapes:
+            if not isinstance(sh, (Circle, Polygon)):
+                raise TypeError("a compound's shapes are Circle, Box or Polygon, got %r" % (sh,))
+        defs = (_native.ShapeDef * max(len(shapes), 1))()
+        keep = []
+        for k, sh in enumerate(shapes):
+            d = _native.new_def(_native.ShapeDef)
+            sh._fill(d, keep)
+            d.density = -1.0 if sh.density is None else _finite(sh.density, "density")
+            d.restitution = -1.0 if sh.restitution is None else _finite(sh.restitution, "restitution")
+            d.friction = -1.0 if sh.friction is None else _finite(sh.friction, "friction")
+            defs[k] = d
+        count = min(len(shapes), 2**31 - 1)
+        return self._add("add_compound",
+                         lambda h, d, i: _lib.carom_world_add_compound(h, d, defs, count, i), options)
+
     def add_polygon(self, points, **options):
         """A simple polygon (convex or concave, either winding) from (x, y)
         points; its centroid is placed at (x, y). Options as add_circle."""
@@ -683,11 +771,39 @@ class Body:
 
     @property
     def shape(self):
-        """'circle' or 'polygon' (boxes and regular polygons are polygons)."""
+        """'circle', 'polygon' (boxes and regular polygons are polygons) or
+        'compound' (World.add_compound: see shapes)."""
         kind, radius = ctypes.c_int(), ctypes.c_double()
         _check(_lib.carom_body_get_shape(self._h(), self._id, ctypes.byref(kind),
                                          ctypes.byref(radius)), "shape")
-        return "circle" if kind.value == _native.SHAPE_CIRCLE else "polygon"
+        return {_native.SHAPE_CIRCLE: "circle", _native.SHAPE_POLYGON: "polygon",
+                _native.SHAPE_COMPOUND: "compound"}[kind.value]
+
+    @property
+    def shapes(self):
+        """The shapes the body is made of, as ShapeInfo in world coordinates
+        (one for a circle or polygon body)."""
+        h = self._h()
+        n = ctypes.c_int32()
+        _check(_lib.carom_body_get_shape_count(h, self._id, ctypes.byref(n)), "shapes")
+        out = []
+        for k in range(n.value):
+            kind, x, y, r = ctypes.c_int(), ctypes.c_double(), ctypes.c_double(), ctypes.c_double()
+            count = ctypes.c_int32()
+            _check(_lib.carom_body_get_shape_geometry(
+                h, self._id, k, ctypes.byref(kind), ctypes.byref(x), ctypes.byref(y),
+                ctypes.byref(r), None, 0, ctypes.byref(count)), "shapes")
+            xy = (ctypes.c_double * max(2 * count.value, 1))()
+            _check(_lib.carom_body_get_shape_geometry(
+                h, self._id, k, None, None, None, None, xy, count.value, None), "shapes")
+            rho, e, mu = ctypes.c_double(), ctypes.c_double(), ctypes.c_double()
+            _check(_lib.carom_body_get_shape_material(h, self._id, k, ctypes.byref(rho),
+                                                      ctypes.byref(e), ctypes.byref(mu)), "shapes")
+            out.append(ShapeInfo(
+                "circle" if kind.value == _native.SHAPE_CIRCLE else "polygon", (x.value, y.value),
+                r.value, [(xy[2 * i], xy[2 * i + 1]) for i in range(count.value)], rho.value,
+                e.value, mu.value))
+        return out
 
     @property
     def radius(self):
@@ -785,7 +901,7 @@ class Body:
     @property
     def vertices(self):
         """A polygon's vertices in world coordinates, counter-clockwise, as
-        (x, y) tuples; [] for a circle."""
+        (x, y) tuples; [] for a circle and a compound (see shapes)."""
         h = self._h()
         count = ctypes.c_int32()
         _check(_lib.carom_body_get_vertices(h, self._id, None, 0, ctypes.byref(count)), "vertices")

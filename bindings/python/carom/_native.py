@@ -84,6 +84,24 @@ class BodyDef(ctypes.Structure):
     ]
 
 
+class ShapeDef(ctypes.Structure):
+    """carom_shape_def (version 0.2): one shape of a compound body."""
+
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("kind", ctypes.c_int),
+        ("x", ctypes.c_double),
+        ("y", ctypes.c_double),
+        ("angle", ctypes.c_double),
+        ("radius", ctypes.c_double),
+        ("xy", ctypes.POINTER(ctypes.c_double)),
+        ("count", ctypes.c_int32),
+        ("density", ctypes.c_double),
+        ("restitution", ctypes.c_double),
+        ("friction", ctypes.c_double),
+    ]
+
+
 class RayHit(ctypes.Structure):
     """carom_ray_hit (version 0.2)."""
 
@@ -151,9 +169,10 @@ class SceneError(ctypes.Structure):
 # Constants of include/carom.h (enum values are fixed by the ABI).
 DYNAMIC, STATIC, KINEMATIC = 0, 1, 2
 EVENT_CONTACT_BEGIN, EVENT_CONTACT_END, EVENT_SENSOR_BEGIN, EVENT_SENSOR_END = 0, 1, 2, 3
-SHAPE_CIRCLE, SHAPE_POLYGON = 0, 1
+SHAPE_CIRCLE, SHAPE_POLYGON, SHAPE_COMPOUND = 0, 1, 2
 NARROW_SAT, NARROW_VERTEX_EDGE = 0, 1
 MAX_POLYGON_VERTICES = 1024
+MAX_COMPOUND_SHAPES = 256
 
 
 # -------------------------------------------------------------- prototypes
@@ -188,6 +207,9 @@ PROTOTYPES = {
         c_status, [_W, ctypes.POINTER(BodyDef), ctypes.c_int32, _D, c_body_id_p]),
     "carom_world_add_polygon": (
         c_status, [_W, ctypes.POINTER(BodyDef), c_double_p, ctypes.c_int32, c_body_id_p]),
+    "carom_shape_def_init": (c_status, [ctypes.c_void_p, ctypes.c_uint32]),
+    "carom_world_add_compound": (
+        c_status, [_W, ctypes.POINTER(BodyDef), ctypes.POINTER(ShapeDef), ctypes.c_int32, c_body_id_p]),
     "carom_world_remove_body": (c_status, [_W, _ID]),
     "carom_world_get_effects": (ctypes.c_uint32, [_W]),
     "carom_effect_name": (ctypes.c_char_p, [ctypes.c_int]),
@@ -217,6 +239,12 @@ PROTOTYPES = {
     "carom_body_get_vertices": (
         c_status, [_W, _ID, c_double_p, ctypes.c_int32, c_int32_p]),
     # version 0.2
+    "carom_body_get_shape_count": (c_status, [_W, _ID, c_int32_p]),
+    "carom_body_get_shape_geometry": (
+        c_status, [_W, _ID, ctypes.c_int32, ctypes.POINTER(ctypes.c_int), c_double_p, c_double_p,
+                   c_double_p, c_double_p, ctypes.c_int32, c_int32_p]),
+    "carom_body_get_shape_material": (
+        c_status, [_W, _ID, ctypes.c_int32, c_double_p, c_double_p, c_double_p]),
     "carom_body_apply_force": (c_status, [_W, _ID, _D, _D, _D, _D]),
     "carom_body_apply_torque": (c_status, [_W, _ID, _D]),
     "carom_world_clear_forces": (c_status, [_W]),
@@ -339,7 +367,8 @@ def new_def(cls):
     """A def filled with the library's defaults for the struct as this binding
     knows it: the binding passes its own size (the ABI rule), and a library
     older than the binding, which cannot fill that much, refuses it."""
-    init = lib.carom_world_def_init if cls is WorldDef else lib.carom_body_def_init
+    init = {WorldDef: lib.carom_world_def_init, BodyDef: lib.carom_body_def_init,
+            ShapeDef: lib.carom_shape_def_init}[cls]
     d = cls()
     status = init(ctypes.byref(d), ctypes.sizeof(cls))
     if status != 0:
@@ -353,3 +382,4 @@ def new_def(cls):
 # Fail at import, not at first use, when the library is older than the binding.
 new_def(WorldDef)
 new_def(BodyDef)
+new_def(ShapeDef)

@@ -390,6 +390,52 @@ def test_impulses_and_forces_are_exact():
         assert box.velocity == v1
 
 
+def test_compound_mass_shapes_and_errors():
+    with carom.World(gravity=(0, -9.81), friction=0.5) as world:
+        # a dumbbell: discs of density 2 and 1 (the body's) on a bar of 0.5
+        r, L = 0.5, 2.0
+        body = world.add_compound([carom.Circle(r, offset=(-L, 0), density=2.0),
+                                   carom.Circle(r, offset=(L, 0), friction=0.1),
+                                   carom.Box(3.0, 0.4, density=0.5)], x=1.0, y=3.0)
+        m1, m2, m3 = 2 * math.pi * r * r, math.pi * r * r, 0.5 * 3.0 * 0.4
+        m = m1 + m2 + m3
+        c = (m2 * L - m1 * L) / m
+        inertia = (m1 * r * r / 2 + m1 * (L + c) ** 2 + m2 * r * r / 2 + m2 * (L - c) ** 2
+                   + m3 * (9.0 + 0.16) / 12 + m3 * c * c)
+        assert body.mass == pytest.approx(m, rel=1e-15)
+        assert body.inertia == pytest.approx(inertia, rel=1e-14)
+        assert body.shape == "compound" and body.vertices == []
+        shapes = body.shapes
+        assert [s.kind for s in shapes] == ["circle", "circle", "polygon"]
+        assert shapes[0].center == pytest.approx((1.0 - L - c, 3.0), abs=1e-14)
+        assert shapes[0].density == 2.0 and shapes[1].density == 1.0
+        assert shapes[1].friction == 0.1 and shapes[0].friction == 0.5
+        assert len(shapes[2].vertices) == 4
+        # one shape of a circle body
+        ball = world.add_circle(0.25, x=5.0, y=1.0)
+        assert [s.kind for s in ball.shapes] == ["circle"]
+        world.add_box(20.0, 1.0, y=-0.5, static=True)
+        for _ in range(240):
+            world.step(1 / 60)
+        assert body.position[1] == pytest.approx(r, abs=0.01)  # resting on the discs
+        drawn = []
+        world.debug_draw(polygon=lambda pts, b: drawn.append(("p", b)),
+                         circle=lambda c_, r_, a, b: drawn.append(("c", b)))
+        assert drawn.count(("c", body)) == 2 and drawn.count(("p", body)) == 1
+        with pytest.raises(carom.CaromError) as err:
+            world.add_compound([carom.Circle(-1.0)])
+        assert err.value.status == carom.Status.BAD_SIZE
+        with pytest.raises(carom.CaromError) as err:
+            world.add_compound([])
+        assert err.value.status == carom.Status.BAD_ARGUMENT
+        with pytest.raises(carom.CaromError) as err:
+            world.add_compound([carom.Polygon([(0, 0), (1, 1), (1, 0), (0, 1)])])
+        assert err.value.status == carom.Status.SELF_INTERSECTING
+        with pytest.raises(TypeError):
+            world.add_compound([(0, 0)])
+        assert len(world) == 3
+
+
 def test_kinematic_platform_carries_a_box():
     with carom.World(gravity=(0, -10)) as world:
         platform = world.add_box(6.0, 0.5, kinematic=True, vx=1.0, friction=0.6)

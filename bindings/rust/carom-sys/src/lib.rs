@@ -68,6 +68,8 @@ pub const CAROM_ERR_IO: carom_status = 18;
 // ------------------------------------------------------------------- limits
 
 pub const CAROM_MAX_POLYGON_VERTICES: i32 = 1024;
+/// Version 0.2: most shapes in one compound body.
+pub const CAROM_MAX_COMPOUND_SHAPES: i32 = 256;
 pub const CAROM_MAX_BODIES: i32 = 1 << 24;
 
 // -------------------------------------------------------------------- types
@@ -107,6 +109,8 @@ pub const CAROM_EFFECT_CONTINUOUS: carom_effect = 1 << 7;
 pub type carom_shape_kind = c_int;
 pub const CAROM_SHAPE_CIRCLE: carom_shape_kind = 0;
 pub const CAROM_SHAPE_POLYGON: carom_shape_kind = 1;
+/// Version 0.2: a body of several shapes.
+pub const CAROM_SHAPE_COMPOUND: carom_shape_kind = 2;
 
 /// The opaque world.
 #[repr(C)]
@@ -161,6 +165,23 @@ pub struct carom_body_def {
     pub mask: u32,
     pub group: i32,
     pub sensor: i32,
+}
+
+/// Version 0.2: one shape of a compound body (`carom_world_add_compound`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct carom_shape_def {
+    pub size: u32,
+    pub kind: carom_shape_kind,
+    pub x: f64,
+    pub y: f64,
+    pub angle: f64,
+    pub radius: f64,
+    pub xy: *const f64,
+    pub count: i32,
+    pub density: f64,
+    pub restitution: f64,
+    pub friction: f64,
 }
 
 /// Version 0.2: the first body a ray meets.
@@ -282,6 +303,14 @@ extern "C" {
         count: i32,
         id: *mut carom_body_id,
     ) -> carom_status;
+    pub fn carom_shape_def_init(def: *mut carom_shape_def, size: u32) -> carom_status;
+    pub fn carom_world_add_compound(
+        world: *mut carom_world,
+        def: *const carom_body_def,
+        shapes: *const carom_shape_def,
+        count: i32,
+        id: *mut carom_body_id,
+    ) -> carom_status;
     pub fn carom_world_remove_body(world: *mut carom_world, id: carom_body_id) -> carom_status;
     pub fn carom_world_get_effects(world: *const carom_world) -> u32;
     pub fn carom_effect_name(effect: carom_effect) -> *const c_char;
@@ -374,6 +403,27 @@ extern "C" {
     ) -> carom_status;
 
     // version 0.2
+    pub fn carom_body_get_shape_count(world: *const carom_world, id: carom_body_id, count: *mut i32) -> carom_status;
+    pub fn carom_body_get_shape_geometry(
+        world: *const carom_world,
+        id: carom_body_id,
+        index: i32,
+        kind: *mut carom_shape_kind,
+        x: *mut f64,
+        y: *mut f64,
+        radius: *mut f64,
+        xy: *mut f64,
+        capacity: i32,
+        count: *mut i32,
+    ) -> carom_status;
+    pub fn carom_body_get_shape_material(
+        world: *const carom_world,
+        id: carom_body_id,
+        index: i32,
+        density: *mut f64,
+        restitution: *mut f64,
+        friction: *mut f64,
+    ) -> carom_status;
     pub fn carom_body_apply_force(world: *mut carom_world, id: carom_body_id, fx: f64, fy: f64, px: f64, py: f64) -> carom_status;
     pub fn carom_body_apply_torque(world: *mut carom_world, id: carom_body_id, torque: f64) -> carom_status;
     pub fn carom_world_clear_forces(world: *mut carom_world) -> carom_status;

@@ -96,6 +96,81 @@ pub fn library_accepts_def_sizes() -> (carom_status, carom_status) {
     )
 }
 
+/// One shape of a compound body ([`World::add_compound`]), in body
+/// coordinates: a circle about `offset`, or a polygon whose points are
+/// turned by `angle` and then moved by `offset`. Density, restitution and
+/// friction left `None` are the body def's.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CompoundShape {
+    pub kind: carom_shape_kind,
+    pub radius: f64,
+    pub points: Vec<[f64; 2]>,
+    pub offset: [f64; 2],
+    pub angle: f64,
+    pub density: Option<f64>,
+    pub restitution: Option<f64>,
+    pub friction: Option<f64>,
+}
+
+impl CompoundShape {
+    pub fn circle(radius: f64, offset: [f64; 2]) -> CompoundShape {
+        CompoundShape {
+            kind: CAROM_SHAPE_CIRCLE,
+            radius,
+            points: Vec::new(),
+            offset,
+            angle: 0.0,
+            density: None,
+            restitution: None,
+            friction: None,
+        }
+    }
+
+    pub fn polygon(points: &[[f64; 2]], offset: [f64; 2], angle: f64) -> CompoundShape {
+        CompoundShape {
+            kind: CAROM_SHAPE_POLYGON,
+            points: points.to_vec(),
+            angle,
+            ..CompoundShape::circle(0.0, offset)
+        }
+    }
+
+    /// A width x height box centred on `offset`, turned by `angle`.
+    pub fn rect(width: f64, height: f64, offset: [f64; 2], angle: f64) -> CompoundShape {
+        let (w, h) = (0.5 * width, 0.5 * height);
+        CompoundShape::polygon(&[[-w, -h], [w, -h], [w, h], [-w, h]], offset, angle)
+    }
+
+    pub fn density(mut self, density: f64) -> CompoundShape {
+        self.density = Some(density);
+        self
+    }
+
+    pub fn restitution(mut self, restitution: f64) -> CompoundShape {
+        self.restitution = Some(restitution);
+        self
+    }
+
+    pub fn friction(mut self, friction: f64) -> CompoundShape {
+        self.friction = Some(friction);
+        self
+    }
+}
+
+/// One shape of a body as [`World::shapes`] reports it, in world
+/// coordinates: a polygon's `center` is its centroid and its `radius` the
+/// farthest vertex from it; `vertices` is empty for a circle.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShapeInfo {
+    pub kind: carom_shape_kind,
+    pub center: (f64, f64),
+    pub radius: f64,
+    pub vertices: Vec<[f64; 2]>,
+    pub density: f64,
+    pub restitution: f64,
+    pub friction: f64,
+}
+
 /// One contact point: bodies, point, unit normal from a to b, depth.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Contact {
@@ -274,6 +349,98 @@ impl World {
         Ok(id)
     }
 
+    /// A body of several shapes (`carom_world_add_compound`): the centre of
+    /// mass of their union is placed at (def.x, def.y).
+    pub fn add_compound(
+        &mut self,
+        def: &carom_body_def,
+        shapes: &[CompoundShape],
+    ) -> Result<carom_body_id> {
+        let def = sized(def);
+        let count = i32::try_from(shapes.len())
+            .map_err(|_| Error::from_status(CAROM_ERR_BAD_ARGUMENT))?;
+        let mut defs = Vec::with_capacity(shapes.len());
+        for sh in shapes {
+            let (mut d, status) = defaults(carom_shape_def_init);
+            check(status)?;
+            d.kind = sh.kind;
+            d.x = sh.offset[0];
+            d.y = sh.offset[1];
+            d.angle = sh.angle;
+            d.radius = sh.radius;
+            // [[f64; 2]] is laid out as x0, y0, x1, y1, ...; `shapes` outlives the call
+            d.xy = if sh.points.is_empty() { ptr::null() } else { sh.points.as_ptr() as *const f64 };
+            d.count = i32::try_from(sh.points.len()).unwrap_or(i32::MAX);
+            d.density = sh.density.unwrap_or(-1.0);
+            d.restitution = sh.restitution.unwrap_or(-1.0);
+            d.friction = sh.friction.unwrap_or(-1.0);
+            defs.push(d);
+        }
+        let mut id = CAROM_NULL_BODY;
+        check(unsafe { carom_world_add_compound(self.as_ptr(), &def, defs.as_ptr(), count, &mut id) })?;
+        Ok(id)
+    }
+
+    /// The shapes a body is made of (one for a circle or polygon body).
+    pub fn shapes(&self, id: carom_body_id) -> Result<Vec<ShapeInfo>> {
+        let mut n = 0;
+        check(unsafe { carom_body_get_shape_count(self.as_ptr(), id, &mut n) })?;
+        let mut out = Vec::with_capacity(n.max(0) as usize);
+        for k in 0..n {
+            let mut info = ShapeInfo {
+                kind: 0,
+                center: (0.0, 0.0),
+                radius: 0.0,
+                vertices: Vec::new(),
+                density: 0.0,
+                restitution: 0.0,
+                friction: 0.0,
+            };
+            let mut count = 0;
+            check(unsafe {
+                carom_body_get_shape_geometry(
+                    self.as_ptr(),
+                    id,
+                    k,
+                    &mut info.kind,
+                    &mut info.center.0,
+                    &mut info.center.1,
+                    &mut info.radius,
+                    ptr::null_mut(),
+                    0,
+                    &mut count,
+                )
+            })?;
+            info.vertices = vec![[0.0f64; 2]; count.max(0) as usize];
+            check(unsafe {
+                carom_body_get_shape_geometry(
+                    self.as_ptr(),
+                    id,
+                    k,
+                    ptr::null_mut(),
+                    ptr::null_mut(),
+                    ptr::null_mut(),
+                    ptr::null_mut(),
+                    info.vertices.as_mut_ptr() as *mut f64,
+                    count.max(0),
+                    ptr::null_mut(),
+                )
+            })?;
+            check(unsafe {
+                carom_body_get_shape_material(
+                    self.as_ptr(),
+                    id,
+                    k,
+                    &mut info.density,
+                    &mut info.restitution,
+                    &mut info.friction,
+                )
+            })?;
+            out.push(info);
+        }
+        Ok(out)
+    }
+
     pub fn remove_body(&mut self, id: carom_body_id) -> Result<()> {
         check(unsafe { carom_world_remove_body(self.as_ptr(), id) })
     }
@@ -323,7 +490,7 @@ impl World {
     }
 
     /// A polygon's vertices in world coordinates, counter-clockwise; empty
-    /// for a circle.
+    /// for a circle and a compound (see [`World::shapes`]).
     pub fn vertices(&self, id: carom_body_id) -> Result<Vec<[f64; 2]>> {
         let mut n = 0;
         check(unsafe { carom_body_get_vertices(self.as_ptr(), id, ptr::null_mut(), 0, &mut n) })?;

@@ -1,5 +1,5 @@
 //! The C library through the declarations of this crate, raw and safe.
-use carom_sys::safe::{self, World};
+use carom_sys::safe::{self, CompoundShape, World};
 use carom_sys::*;
 use std::mem::size_of;
 use std::ptr;
@@ -200,4 +200,64 @@ fn version_0_2_forces_queries_events_and_draw() {
         })
         .unwrap();
     assert_eq!((polys, circles), (2, 1));
+}
+
+#[test]
+fn compound_bodies_have_the_union_mass_and_their_shapes() {
+    let mut def = safe::world_def();
+    def.gravity_y = -9.81;
+    def.friction = 0.5;
+    let mut world = World::with_def(&def).unwrap();
+    let (r, l) = (0.5f64, 2.0f64);
+    let mut b = safe::body_def();
+    b.x = 1.0;
+    b.y = 3.0;
+    let body = world
+        .add_compound(
+            &b,
+            &[
+                CompoundShape::circle(r, [-l, 0.0]).density(2.0),
+                CompoundShape::circle(r, [l, 0.0]).friction(0.1),
+                CompoundShape::rect(3.0, 0.4, [0.0, 0.0], 0.0).density(0.5),
+            ],
+        )
+        .unwrap();
+    let pi = std::f64::consts::PI;
+    let (m1, m2, m3) = (2.0 * pi * r * r, pi * r * r, 0.5 * 3.0 * 0.4);
+    let m = m1 + m2 + m3;
+    let c = (m2 * l - m1 * l) / m;
+    let inertia = m1 * r * r / 2.0 + m1 * (l + c) * (l + c) + m2 * r * r / 2.0 + m2 * (l - c) * (l - c)
+        + m3 * (9.0 + 0.16) / 12.0 + m3 * c * c;
+    let (gm, gi, _) = world.mass(body).unwrap();
+    assert!((gm - m).abs() <= 1e-15 * m);
+    assert!((gi - inertia).abs() <= 1e-14 * inertia);
+    let shapes = world.shapes(body).unwrap();
+    assert_eq!(shapes.len(), 3);
+    assert_eq!(shapes[0].kind, CAROM_SHAPE_CIRCLE);
+    assert!((shapes[0].center.0 - (1.0 - l - c)).abs() < 1e-14);
+    assert_eq!((shapes[0].density, shapes[1].density), (2.0, 1.0));
+    assert_eq!((shapes[0].friction, shapes[1].friction), (0.5, 0.1));
+    assert_eq!(shapes[2].vertices.len(), 4);
+    assert!(world.vertices(body).unwrap().is_empty());
+    assert_eq!(
+        world.add_compound(&b, &[CompoundShape::circle(-1.0, [0.0, 0.0])]).unwrap_err().status,
+        CAROM_ERR_BAD_SIZE
+    );
+    assert_eq!(world.add_compound(&b, &[]).unwrap_err().status, CAROM_ERR_BAD_ARGUMENT);
+    assert_eq!(
+        world
+            .add_compound(&b, &[CompoundShape::polygon(&[[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]], [0.0, 0.0], 0.0)])
+            .unwrap_err()
+            .status,
+        CAROM_ERR_SELF_INTERSECTING
+    );
+    let mut g = safe::body_def();
+    g.type_ = CAROM_STATIC;
+    g.y = -0.5;
+    world.add_box(&g, 20.0, 1.0).unwrap();
+    for _ in 0..240 {
+        world.step(1.0 / 60.0).unwrap();
+    }
+    assert!((world.position(body).unwrap().1 - r).abs() < 0.01);
+    assert_eq!(world.body_count(), 2);
 }
