@@ -6,7 +6,7 @@
 #include <gdk/gdkkeysyms.h>
 #include <glib.h>
 
-/* Number keys 1-6 pick a scene from the table. */
+/* Number keys 1-7 pick a scene from the table. */
 static controls_result controls_scene (demo *d, int index)
 {
   const scene_entry *e = scenes_get (index);
@@ -30,6 +30,7 @@ controls_result controls_key (demo *d, unsigned keyval)
     case GDK_KEY_4: case GDK_KEY_KP_4: return controls_scene (d, 3);
     case GDK_KEY_5: case GDK_KEY_KP_5: return controls_scene (d, 4);
     case GDK_KEY_6: case GDK_KEY_KP_6: return controls_scene (d, 5);
+    case GDK_KEY_7: case GDK_KEY_KP_7: return controls_scene (d, 6);
     case GDK_KEY_Up:
       demo_change_gravity (d, 0.0, DEMO_GRAVITY_STEP);
       break;

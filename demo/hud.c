@@ -111,7 +111,7 @@ void hud_draw_status (cairo_t *cr, const hud *h, const hud_status *st, double y,
 }
 
 static const char *const hud_help_lines[][2] = {
-  { "1 2 3 4 5", "scenes: thesis balls pyramid rain gas" },
+  { "1 ... 7", "scenes: thesis balls pyramid rain gas platform compound" },
   { "arrows", "change gravity" },
   { "g", "show the gravity vector" },
   { "+ - PgUp PgDn", "restitution up / down" },

@@ -62,23 +62,35 @@ static int32_t render_bodies (const carom_world *world, carom_body_id **ids)
   return n;
 }
 
-/* A polygon's world vertices into *xy (grown as needed, *cap points);
- * returns the count, 0 for a circle or on failure. */
-static int32_t render_vertices (const carom_world *world, carom_body_id id, double **xy, int32_t *cap)
+/* Shape `index` of a body: a polygon's world vertices into *xy (grown as
+ * needed, *cap points), returning the count, or 0 for a circle (its centre
+ * and radius in *x, *y, *r) or on failure (-1). */
+static int32_t render_shape (const carom_world *world, carom_body_id id, int32_t index, double **xy, int32_t *cap,
+                             double *x, double *y, double *r)
 {
   int32_t n = 0;
-  if (carom_body_get_vertices (world, id, *xy, *cap, &n) != CAROM_OK || n <= 0)
-    return 0;
+  carom_shape_kind kind = CAROM_SHAPE_CIRCLE;
+  if (carom_body_get_shape_geometry (world, id, index, &kind, x, y, r, *xy, *cap, &n) != CAROM_OK)
+    return -1;
+  if (kind == CAROM_SHAPE_CIRCLE)
+    return isfinite (*x) && isfinite (*y) && isfinite (*r) ? 0 : -1;
   if (n > *cap)
     {
       double *grown = realloc (*xy, 2 * (size_t) n * sizeof **xy);
       if (!grown)
-        return 0;
+        return -1;
       *xy = grown;
       *cap = n;
-      if (carom_body_get_vertices (world, id, *xy, *cap, &n) != CAROM_OK)
-        return 0;
+      if (carom_body_get_shape_geometry (world, id, index, NULL, NULL, NULL, NULL, *xy, *cap, &n) != CAROM_OK)
+        return -1;
     }
+  return n;
+}
+
+static int32_t render_shape_count (const carom_world *world, carom_body_id id)
+{
+  int32_t n = 0;
+  carom_body_get_shape_count (world, id, &n);
   return n;
 }
 
@@ -98,29 +110,26 @@ void render_fit_view (render_options *opt, const carom_world *world)
 {
   double lo_x = HUGE_VAL, lo_y = HUGE_VAL, hi_x = -HUGE_VAL, hi_y = -HUGE_VAL;
   double w, h, margin, *xy = NULL;
-  int32_t n, i, k, cap = 0;
+  int32_t n, i, j, k, cap = 0;
   carom_body_id *ids = NULL;
   n = render_bodies (world, &ids);
   for (i = 0; i < n; ++i)
-    {
-      int32_t count = render_vertices (world, ids[i], &xy, &cap);
-      double x, y, r = 0.0;
-      if (count == 0)
-        {
-          carom_body_get_position (world, ids[i], &x, &y);
-          carom_body_get_shape (world, ids[i], NULL, &r);
-          if (!isfinite (x) || !isfinite (y) || !isfinite (r))
-            continue;
-          lo_x = fmin (lo_x, x - r), hi_x = fmax (hi_x, x + r);
-          lo_y = fmin (lo_y, y - r), hi_y = fmax (hi_y, y + r);
-        }
-      for (k = 0; k < count; ++k)
-        if (isfinite (xy[2 * k]) && isfinite (xy[2 * k + 1]))
+    for (j = 0; j < render_shape_count (world, ids[i]); ++j)
+      {
+        double x = 0.0, y = 0.0, r = 0.0;
+        int32_t count = render_shape (world, ids[i], j, &xy, &cap, &x, &y, &r);
+        if (count == 0)
           {
-            lo_x = fmin (lo_x, xy[2 * k]), hi_x = fmax (hi_x, xy[2 * k]);
-            lo_y = fmin (lo_y, xy[2 * k + 1]), hi_y = fmax (hi_y, xy[2 * k + 1]);
+            lo_x = fmin (lo_x, x - r), hi_x = fmax (hi_x, x + r);
+            lo_y = fmin (lo_y, y - r), hi_y = fmax (hi_y, y + r);
           }
-    }
+        for (k = 0; k < count; ++k)
+          if (isfinite (xy[2 * k]) && isfinite (xy[2 * k + 1]))
+            {
+              lo_x = fmin (lo_x, xy[2 * k]), hi_x = fmax (hi_x, xy[2 * k]);
+              lo_y = fmin (lo_y, xy[2 * k + 1]), hi_y = fmax (hi_y, xy[2 * k + 1]);
+            }
+      }
   free (ids);
   free (xy);
   if (!(lo_x <= hi_x && lo_y <= hi_y))
@@ -240,15 +249,32 @@ static void render_grid (cairo_t *cr, const render_options *opt, double scale)
   cairo_stroke (cr);
 }
 
-/* Trace the body's outline as the current path; returns 0 if it has no
- * finite state to draw. */
+/* Trace the body's outline as the current path (each shape of a compound
+ * a sub-path); returns 0 if it has no finite state to draw. */
 static int render_body_path (cairo_t *cr, const render_options *opt, const carom_world *world, carom_body_id id,
                              double **xy, int32_t *cap, double scale)
 {
-  int32_t n = render_vertices (world, id, xy, cap), k;
-  double x, y, sx, sy;
-  if (n > 0)
+  int32_t shapes = render_shape_count (world, id), j, k;
+  double sx, sy;
+  for (j = 0; j < shapes; ++j)
     {
+      double x = 0.0, y = 0.0, r = 0.0;
+      int32_t n = render_shape (world, id, j, xy, cap, &x, &y, &r);
+      if (n < 0)
+        {
+          cairo_new_path (cr);
+          return 0;
+        }
+      if (n == 0)
+        {
+          render_to_screen (opt, x, y, &sx, &sy);
+          /* turning as polygons do on screen (y down), so the shapes of a
+           * compound fill as one */
+          cairo_new_sub_path (cr);
+          cairo_arc_negative (cr, sx, sy, r * scale, 0.0, -2.0 * RENDER_PI);
+          cairo_close_path (cr);
+          continue;
+        }
       for (k = 0; k < n; ++k)
         {
           if (!isfinite ((*xy)[2 * k]) || !isfinite ((*xy)[2 * k + 1]))
@@ -263,38 +289,44 @@ static int render_body_path (cairo_t *cr, const render_options *opt, const carom
             cairo_line_to (cr, sx, sy);
         }
       cairo_close_path (cr);
-      return 1;
     }
-  {
-    double r = 0.0;
-    carom_body_get_position (world, id, &x, &y);
-    carom_body_get_shape (world, id, NULL, &r);
-    if (!isfinite (x) || !isfinite (y) || !isfinite (r))
-      return 0;
-    render_to_screen (opt, x, y, &sx, &sy);
-    cairo_new_sub_path (cr);
-    cairo_arc (cr, sx, sy, r * scale, 0.0, 2.0 * RENDER_PI);
-    cairo_close_path (cr);
-  }
+  return shapes > 0;
+}
+
+/* Bodies are drawn through the library's debug draw (carom_world_draw):
+ * one pass for the static bodies, then one for the others, so moving
+ * bodies are never hidden behind walls. */
+typedef struct render_pass {
+  cairo_t *cr;
+  const render_options *opt;
+  const carom_world *world;
+  double scale, line;
+  int statics; /* this pass draws the static bodies (1) or the others (0) */
+} render_pass;
+
+/* Whether this pass draws `id`, and in which style. */
+static int render_pass_style (const render_pass *p, carom_body_id id, carom_body_type *type, int32_t *sensor,
+                              int *lit)
+{
+  int32_t i;
+  *type = CAROM_DYNAMIC;
+  carom_body_get_type (p->world, id, type);
+  if ((*type == CAROM_STATIC) != p->statics)
+    return 0;
+  *sensor = 0;
+  carom_body_is_sensor (p->world, id, sensor);
+  *lit = 0;
+  for (i = 0; i < p->opt->lit_count; ++i)
+    *lit |= p->opt->lit[i] == id;
   return 1;
 }
 
-static void render_body (cairo_t *cr, const render_options *opt, const carom_world *world, carom_body_id id,
-                         double **xy, int32_t *cap, double scale, double line)
+/* Fill and stroke the current path in the body's style. */
+static void render_paint_shape (const render_pass *p, carom_body_id id, carom_body_type type, int32_t sensor,
+                                int lit)
 {
-  carom_body_type type = CAROM_DYNAMIC;
-  carom_shape_kind kind = CAROM_SHAPE_POLYGON;
-  int32_t sensor = 0, i;
-  int lit = 0;
-  rgb fill;
-  carom_body_get_type (world, id, &type);
-  carom_body_get_shape (world, id, &kind, NULL);
-  if (!render_body_path (cr, opt, world, id, xy, cap, scale))
-    return;
-  fill = render_body_colour (id);
-  carom_body_is_sensor (world, id, &sensor);
-  for (i = 0; i < opt->lit_count; ++i)
-    lit |= opt->lit[i] == id;
+  cairo_t *cr = p->cr;
+  rgb fill = render_body_colour (id);
   if (sensor)
     {
       /* a sensor: a pale zone, bright while something is inside */
@@ -318,23 +350,74 @@ static void render_body (cairo_t *cr, const render_options *opt, const carom_wor
     cairo_set_source_rgb (cr, 0.2, 0.25, 0.4);
   else
     cairo_set_source_rgb (cr, 0.35 * fill.r, 0.35 * fill.g, 0.35 * fill.b);
-  cairo_set_line_width (cr, line);
+  cairo_set_line_width (cr, p->line);
   cairo_set_line_join (cr, CAIRO_LINE_JOIN_ROUND);
   cairo_stroke (cr);
+}
 
-  /* a radius at the body's angle, so a circle's rotation shows */
-  if (kind == CAROM_SHAPE_CIRCLE)
+static void render_draw_polygon (const double *xy, int32_t n, carom_body_id body, void *user)
+{
+  const render_pass *p = user;
+  carom_body_type type;
+  int32_t sensor, k;
+  int lit;
+  if (!render_pass_style (p, body, &type, &sensor, &lit))
+    return;
+  for (k = 0; k < n; ++k)
     {
-      double x, y, a = 0.0, r = 0.0, sx0, sy0, sx1, sy1;
-      carom_body_get_position (world, id, &x, &y);
-      carom_body_get_angle (world, id, &a);
-      carom_body_get_shape (world, id, NULL, &r);
-      render_to_screen (opt, x, y, &sx0, &sy0);
-      render_to_screen (opt, x + r * cos (a), y + r * sin (a), &sx1, &sy1);
-      cairo_move_to (cr, sx0, sy0);
-      cairo_line_to (cr, sx1, sy1);
-      cairo_stroke (cr);
+      double sx, sy;
+      if (!isfinite (xy[2 * k]) || !isfinite (xy[2 * k + 1]))
+        {
+          cairo_new_path (p->cr);
+          return;
+        }
+      render_to_screen (p->opt, xy[2 * k], xy[2 * k + 1], &sx, &sy);
+      if (k == 0)
+        cairo_move_to (p->cr, sx, sy);
+      else
+        cairo_line_to (p->cr, sx, sy);
     }
+  cairo_close_path (p->cr);
+  render_paint_shape (p, body, type, sensor, lit);
+}
+
+static void render_draw_circle (double x, double y, double r, double angle, carom_body_id body, void *user)
+{
+  const render_pass *p = user;
+  carom_body_type type;
+  int32_t sensor;
+  int lit;
+  double sx0, sy0, sx1, sy1;
+  if (!render_pass_style (p, body, &type, &sensor, &lit))
+    return;
+  if (!isfinite (x) || !isfinite (y) || !isfinite (r) || !isfinite (angle))
+    return;
+  render_to_screen (p->opt, x, y, &sx0, &sy0);
+  cairo_new_sub_path (p->cr);
+  cairo_arc (p->cr, sx0, sy0, r * p->scale, 0.0, 2.0 * RENDER_PI);
+  cairo_close_path (p->cr);
+  render_paint_shape (p, body, type, sensor, lit);
+  /* a radius at the body's angle, so a circle's rotation shows */
+  render_to_screen (p->opt, x + r * cos (angle), y + r * sin (angle), &sx1, &sy1);
+  cairo_move_to (p->cr, sx0, sy0);
+  cairo_line_to (p->cr, sx1, sy1);
+  cairo_stroke (p->cr);
+}
+
+static void render_bodies_drawn (cairo_t *cr, const render_options *opt, const carom_world *world, double scale,
+                                 double line)
+{
+  render_pass pass;
+  carom_debug_draw draw;
+  if (carom_debug_draw_init (&draw, sizeof draw) != CAROM_OK)
+    return;
+  pass.cr = cr, pass.opt = opt, pass.world = world, pass.scale = scale, pass.line = line;
+  draw.polygon = render_draw_polygon;
+  draw.circle = render_draw_circle;
+  draw.user = &pass;
+  draw.draw_contacts = 0; /* drawn by render_contacts, at a fixed size on screen */
+  for (pass.statics = 1; pass.statics >= 0; --pass.statics)
+    carom_world_draw (world, &draw);
 }
 
 static void render_highlight (cairo_t *cr, const render_options *opt, const carom_world *world, double **xy,
@@ -570,22 +653,8 @@ void render_world (cairo_t *cr, const carom_world *world, const render_options *
   cairo_paint (cr);
   render_grid (cr, opt, scale);
 
+  render_bodies_drawn (cr, opt, world, scale, line);
   n = render_bodies (world, &ids);
-  /* statics first, so moving bodies are never hidden behind walls */
-  for (i = 0; i < n; ++i)
-    {
-      carom_body_type type = CAROM_DYNAMIC;
-      carom_body_get_type (world, ids[i], &type);
-      if (type == CAROM_STATIC)
-        render_body (cr, opt, world, ids[i], &xy, &cap, scale, line);
-    }
-  for (i = 0; i < n; ++i)
-    {
-      carom_body_type type = CAROM_DYNAMIC;
-      carom_body_get_type (world, ids[i], &type);
-      if (type != CAROM_STATIC)
-        render_body (cr, opt, world, ids[i], &xy, &cap, scale, line);
-    }
   if (opt->highlight_body_valid)
     render_highlight (cr, opt, world, &xy, &cap, scale);
   for (i = 0; i < n && opt->show_centroids; ++i)

@@ -297,7 +297,8 @@ static void runner_csv_rows (FILE *f, const carom_world *w, const carom_body_id 
       if (step >= 0)
         fprintf (f, "%ld,", step);
       fprintf (f, "%ld,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", (long) i,
-               kind == CAROM_SHAPE_CIRCLE ? "circle" : "polygon", x, y, a, vx, vy, s, m, inertia);
+               kind == CAROM_SHAPE_CIRCLE ? "circle" : kind == CAROM_SHAPE_COMPOUND ? "compound" : "polygon", x, y, a,
+               vx, vy, s, m, inertia);
     }
 }
 

@@ -49,6 +49,8 @@ static const scene_entry scenes_table[] = {
     stage_destroy },
   { "platform", "platform.scene", "a kinematic platform carries boxes; a sensor lights up", stage_init,
     platform_update, stage_draw, stage_destroy },
+  { "compound", "compound.scene", "bodies of several shapes: a table, a dumbbell, a hammer", stage_init,
+    stage_update, stage_draw, stage_destroy },
 };
 
 static const scene_entry scenes_user = {

@@ -1,6 +1,6 @@
 /* The demo's scene table, in the manner of Chipmunk's demo list: a name,
  * the scene file and the lifecycle (init, update, draw, destroy) the main
- * loop calls. Number keys 1-6 pick the entries in order. */
+ * loop calls. Number keys 1-7 pick the entries in order. */
 #ifndef CAROM_DEMO_SCENES_H
 #define CAROM_DEMO_SCENES_H
 

@@ -51,6 +51,7 @@ check-demo:
 # (the busy scenes are 230 KB as true colour, 60-80 KB so).
 DEMO_SHOTS := "thesis --frames 50 --keys vg" "balls --frames 120 --keys v" "pyramid --frames 180" \
               "rain --frames 150" "gas --frames 120" "platform --frames 310" \
+              "compound --frames 240" \
               "help --paused --frames 2 --keys h thesis"
 
 demo-shots: $(DEMO_BIN)
