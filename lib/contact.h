@@ -23,6 +23,8 @@ typedef struct contact_point {
   double push_impulse;  /* the push-out's pseudo-impulse in this sub-step */
   double approach;      /* normal relative speed the point met with (what
                            restitution reverses; see contact_solver.c) */
+  double after;         /* what gravity adds to its normal speed from the
+                           meeting to the end of the step */
   double normal_impulse, tangent_impulse; /* accumulated in the sub-steps,
                                              kept for warm starting */
   double total_impulse, tangent_total;    /* all the impulse of this step

@@ -18,8 +18,10 @@
  * sub-step) that move the bodies and are dropped, so position correction
  * never changes a velocity and adds no kinetic energy (split impulses).
  * After the last sub-step, every point that was struck leaves at e times
- * the normal speed it met with (eq. 3.18): for an isolated contact the whole
- * step then applies exactly the impulse of eq. 3.23.
+ * the normal speed it met with, less the gravity after the meeting (eq.
+ * 3.18): for an isolated contact the whole step then applies exactly the
+ * impulse of eq. 3.23 at the moment of impact, with gravity before and
+ * after it.
  *
  * The lever arms r_ap, r_bp and the normal are those of the detection at
  * the start of the step; the separation is followed through the sub-steps
@@ -102,6 +104,47 @@ static void lever_arms_at_impact (contact_point *p, const body *ba, const body *
   lever_arms (p, ba, bb, v2_sub (meet, v2_mad (ba->p, toi, a->v)), v2_sub (meet, v2_mad (bb->p, toi, b->v)));
 }
 
+/* The relative acceleration along n that uniform gravity gives the two
+ * bodies (per unit time; negative when it closes them). */
+static double relative_fall (const solver_body *a, const solver_body *b, vec2 n, const step_context *ctx)
+{
+  vec2 ka = a->moves == MOVES_DYNAMIC ? ctx->kick : v2 (0.0, 0.0);
+  vec2 kb = b->moves == MOVES_DYNAMIC ? ctx->kick : v2 (0.0, 0.0);
+  return ctx->h > 0.0 ? v2_dot (v2_sub (kb, ka), n) * ctx->inv_h : 0.0;
+}
+
+/* When a point a gap -depth apart, closing at vn < 0, meets under the
+ * relative acceleration `fall` along its normal: the first root of
+ * -depth + vn t + fall t^2 / 2 = 0, in the form that does not cancel, or
+ * dt when it does not meet within the step (a closing that gravity, or the
+ * bodies' own acceleration apart, stops first). */
+static double meeting_time (double depth, double vn, double fall, double dt)
+{
+  double gap = -depth, disc = vn * vn - 2.0 * fall * gap, t;
+  if (!(disc >= 0.0))
+    return dt;
+  t = 2.0 * gap / (-vn + sqrt (disc));
+  return t < dt ? t : dt;
+}
+
+/* Whether the point may act on its bodies this step (near at detection and
+ * not leaving faster than gravity's threshold, or meeting within the step:
+ * they then move by symplectic Euler, gravity_drift_velocity), and whether
+ * it held them at detection (near, neither closing nor leaving fast: a
+ * resting contact). A point that does not close within the step, or leaves
+ * fast, leaves free flight exact. */
+static void constrain_bodies (const contact *k, const contact_point *p, solver_body *a, solver_body *b, double vn,
+                              const step_context *ctx)
+{
+  int32_t bits = 0, near = p->depth >= -k->slop;
+  if ((p->toi >= 0.0 && p->toi < ctx->dt) || (near && vn < ctx->restitution_threshold))
+    bits |= CONSTRAINED_ANY;
+  if (near && vn >= -ctx->restitution_threshold && vn < ctx->restitution_threshold)
+    bits |= CONSTRAINED_HELD;
+  a->constrained |= bits;
+  b->constrained |= bits;
+}
+
 /* A warm-start impulse changes the velocities by impulse / mass. If the
  * effective mass fell since last step (a lever arm that grew, as across a
  * long speculative gap), last step's impulse would now give a larger change
@@ -145,7 +188,6 @@ void contact_prepare (carom_world *world, const step_context *ctx)
       const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
       double reach = ba->shape.bound_radius < bb->shape.bound_radius ? ba->shape.bound_radius : bb->shape.bound_radius;
-      a->constrained = b->constrained = 1;
       k->max_push = CONTACT_PUSH_PER_STEP * reach * ctx->inv_dt;
       k->met = 0;
       /* a body falls 0.5 g h^2 in a sub-step with nothing to hold it: more
@@ -162,15 +204,19 @@ void contact_prepare (carom_world *world, const step_context *ctx)
           p->toi = -1.0;
           if (p->depth < 0.0 && vn < 0.0)
             {
-              p->toi = p->depth / vn < ctx->dt ? p->depth / vn : ctx->dt;
+              /* closing: it meets at toi, or is a speculative contact of the
+               * whole step (toi = dt) */
+              p->toi = meeting_time (p->depth, vn, relative_fall (a, b, p->normal, ctx), ctx->dt);
               lever_arms_at_impact (p, ba, bb, a, b, p->toi);
               point_masses (p, a, b);
             }
+          constrain_bodies (k, p, a, b, vn, ctx);
           rescale_warm_start (p, old_nm, old_tm);
           if (k->friction == 0.0)
             p->tangent_impulse = 0.0;
           /* before any impulse of the step (see contact_solve) */
           p->approach = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
+          p->after = 0.0;
           p->total_impulse = p->normal_moment = 0.0;
           p->tangent_total = p->tangent_moment = 0.0;
         }
@@ -226,13 +272,25 @@ void contact_warm_start (carom_world *world, double remaining)
     }
 }
 
+/* The part of the sub-step's gravity kick a body's drift takes back (a free
+ * body's half, gravity_drift_velocity); the kick itself, or 0. */
+static vec2 free_kick (const solver_body *b, const step_context *ctx)
+{
+  return b->moves == MOVES_DYNAMIC && !b->constrained ? ctx->kick : v2 (0.0, 0.0);
+}
+
 /* The normal speed a point's impulse aims at, as -bias: a speculative point
  * (apart by s) may close its gap within the sub-step but not pass it; a
  * touching or overlapping one may not approach. */
 static double point_bias (const contact_point *p, const solver_body *a, const solver_body *b, const step_context *ctx)
 {
   double s = contact_separation (a, b, p);
-  return s > 0.0 ? s * ctx->inv_h : 0.0;
+  if (!(s > 0.0))
+    return 0.0;
+  /* a free body moves by the mean of its velocities before and after the
+   * kick (gravity_drift_velocity): half a kick less far than its velocity
+   * says, which the gap may then take */
+  return s * ctx->inv_h - 0.5 * v2_dot (v2_sub (free_kick (b, ctx), free_kick (a, ctx)), p->normal);
 }
 
 /* The push-out's target for a point, as -bias on its pseudo normal speed:
@@ -289,25 +347,35 @@ static int solve_block (solver_body *a, solver_body *b, contact *k, const double
 /* The first pass in which a contact pushes is when its bodies met. What
  * restitution reverses is the normal speed they met with, taken for every
  * point of every contact on the velocities before any contact impulse of
- * the step (prepare) plus what gravity added until then: measured on one
- * common state, so that for e = 1 the impulses of all the contacts together
- * change no energy, and with the gravity that fell before the impact but
- * none after (exact bounce heights). A point that already touched or
- * overlapped when the step began met the other body before it: none of this
- * step's gravity is part of its approach. */
+ * the step (prepare) plus what gravity added until the meeting: measured on
+ * one common state, so that for e = 1 the impulses of all the contacts
+ * together change no energy. A point apart at detection meets at its time
+ * of impact when it was closing, else (closed by gravity) at the sub-step of
+ * this first push; what gravity adds from then to the end of the step is
+ * kept apart (`after`): the bounce leaves at e times the meeting speed less
+ * it, so no gravity is counted twice and none is lost (exact bounce
+ * heights). A point that already touched or overlapped when the step began
+ * met the other body before it, in a step that has already applied its
+ * gravity: none of this step's is part of its approach or taken from its
+ * bounce. */
 static void note_meeting (contact *k, const solver_body *a, const solver_body *b, const step_context *ctx,
                           int32_t kicks)
 {
-  vec2 ka = a->moves == MOVES_DYNAMIC ? ctx->kick : v2 (0.0, 0.0);
-  vec2 kb = b->moves == MOVES_DYNAMIC ? ctx->kick : v2 (0.0, 0.0);
-  vec2 fell = v2_scale (v2_sub (kb, ka), (double) kicks);
   int32_t j;
   for (j = 0; j < k->count; ++j)
     k->met |= k->points[j].normal_impulse > 0.0;
   if (k->met)
     for (j = 0; j < k->count; ++j)
-      if (k->points[j].depth < 0.0)
-        k->points[j].approach += v2_dot (fell, k->points[j].normal);
+      {
+        contact_point *p = &k->points[j];
+        double fall, meet;
+        if (p->depth >= 0.0)
+          continue;
+        fall = relative_fall (a, b, p->normal, ctx);
+        meet = p->toi >= 0.0 ? p->toi : kicks * ctx->h;
+        p->approach += fall * meet;
+        p->after = fall * (ctx->dt - meet);
+      }
 }
 
 /* Coulomb friction: the tangent impulse stays within mu times the normal
@@ -333,6 +401,17 @@ static void solve_friction (solver_body *a, solver_body *b, contact *k, double r
     }
 }
 
+/* Whether every point of the contact is apart (its bias, the gap it may
+ * close in a sub-step, is positive). */
+static int apart (const contact *k, const double *bias)
+{
+  int32_t j;
+  for (j = 0; j < k->count; ++j)
+    if (!(bias[j] > 0.0))
+      return 0;
+  return 1;
+}
+
 double contact_solve (carom_world *world, const step_context *ctx, int32_t kicks, double remaining, int only_fine)
 {
   contacts *c = &world->contacts;
@@ -348,6 +427,9 @@ double contact_solve (carom_world *world, const step_context *ctx, int32_t kicks
         continue;
       for (j = 0; j < k->count; ++j)
         bias[j] = point_bias (&k->points[j], a, b, ctx);
+      if (remaining <= 0.0 && k->restitution > 0.0 && !k->met && apart (k, bias))
+        continue; /* they meet after the step, if at all: the next step's
+                     impact, at its time, not a bounce from here */
       if (!(k->block && solve_block (a, b, k, bias, remaining, &change)))
         for (j = 0; j < k->count; ++j)
           {
@@ -383,9 +465,9 @@ static int restitution_pair (solver_body *a, solver_body *b, contact *k)
 {
   contact_point *p1 = &k->points[0], *p2 = &k->points[1];
   double x1, x2;
-  double b1 = contact_speed (a, b, p1->normal, p1->rn_a, p1->rn_b) + k->restitution * p1->approach
+  double b1 = contact_speed (a, b, p1->normal, p1->rn_a, p1->rn_b) + k->restitution * p1->approach - p1->after
               - (k->k11 * p1->total_impulse + k->k12 * p2->total_impulse);
-  double b2 = contact_speed (a, b, p2->normal, p2->rn_a, p2->rn_b) + k->restitution * p2->approach
+  double b2 = contact_speed (a, b, p2->normal, p2->rn_a, p2->rn_b) + k->restitution * p2->approach - p2->after
               - (k->k12 * p1->total_impulse + k->k22 * p2->total_impulse);
   if (!k->block || !contact_lcp2 (k->k11, k->k12, k->k22, b1, b2, &x1, &x2))
     return 0;
@@ -420,7 +502,7 @@ static double restitution_pass (solver_body *a, solver_body *b, contact *k, doub
       if (!struck (p, threshold))
         continue;
       vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
-      acc = p->total_impulse - p->normal_mass * (vn + k->restitution * p->approach);
+      acc = p->total_impulse - p->normal_mass * (vn + k->restitution * p->approach - p->after);
       if (acc < 0.0)
         acc = 0.0;
       d = p->normal_mass > 0.0 ? fabs (acc - p->total_impulse) / p->normal_mass : 0.0;
@@ -478,6 +560,19 @@ void contact_restitution (carom_world *world, const step_context *ctx)
  * impulse then conserves angular momentum about any point, as the event
  * does. Only bouncy contacts need it: without restitution the speculative
  * solve already stops the approach exactly where the bodies meet. */
+/* A body some contact acts on moves by symplectic Euler in every sub-step
+ * (gravity_drift_velocity), which takes it g h^2 / 2 further along gravity
+ * per sub-step than free flight: a contact that holds it takes that back,
+ * but a body that flew free until an impact within the step and was held by
+ * nothing at detection ends g h dt / 2 too far. Once per body. */
+static void impact_drift (solver_body *b, const step_context *ctx)
+{
+  if (b->moves != MOVES_DYNAMIC || (b->constrained & (CONSTRAINED_HELD | CONSTRAINED_DRIFT_FIXED)))
+    return;
+  b->constrained |= CONSTRAINED_DRIFT_FIXED;
+  b->dp = v2_mad (b->dp, -0.5 * ctx->dt, ctx->kick);
+}
+
 void contact_time_of_impact (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
@@ -503,6 +598,8 @@ void contact_time_of_impact (carom_world *world, const step_context *ctx)
           a->da -= a->ii * (p->rn_a * dn + p->rt_a * dt_);
           b->dp = v2_add (b->dp, v2_add (v2_scale (p->normal, b->im * dn), v2_scale (t, b->im * dt_)));
           b->da += b->ii * (p->rn_b * dn + p->rt_b * dt_);
+          impact_drift (a, ctx);
+          impact_drift (b, ctx);
         }
     }
 }

@@ -19,6 +19,14 @@ enum {
   MOVES_KINEMATIC = 2  /* at its own velocity, infinite mass */
 };
 
+/* solver_body.constrained: some constraint acts on the body this step (it
+ * moves by symplectic Euler, see gravity_drift_velocity); one of its
+ * contacts held it at detection (touching, or apart but not closing); its
+ * drift was corrected after an impact (contact_time_of_impact). */
+#define CONSTRAINED_ANY 1
+#define CONSTRAINED_HELD 2
+#define CONSTRAINED_DRIFT_FIXED 4
+
 typedef struct solver_body {
   vec2 v;
   double w;
@@ -29,7 +37,7 @@ typedef struct solver_body {
   rot2 dq;       /* rotation since the step began (for the constraints) */
   double da;     /* the same rotation as an angle (for the body) */
   double im, ii; /* inverse mass and inertia (0: cannot be moved) */
-  int32_t constrained; /* some constraint acts on it this step */
+  int32_t constrained; /* some constraint acts on it this step: CONSTRAINED_* bits */
   int32_t moves;       /* MOVES_*: whether and how the sub-steps move it */
 } solver_body;
 

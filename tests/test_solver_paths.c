@@ -65,6 +65,14 @@ static carom_world *pile (void)
     d.x = -4.0, d.y = 14.0;
     assert_status (carom_world_add_compound (w, &d, parts, 2, NULL), CAROM_OK);
   }
+  /* a row of boxes side by side and one sliding into a wall: normals along
+   * x, whose zero y the paths must negate alike */
+  for (i = 0; i < 4; ++i)
+    add_box (w, CAROM_DYNAMIC, 20.0 + 1.0 * i, 0.5, 0.0, 1.0, 1.0);
+  add_box (w, CAROM_STATIC, 25.0, 1.0, 0.0, 1.0, 2.0);
+  carom_body_def_init (&d, sizeof d);
+  d.x = 23.0, d.y = 1.5, d.vx = 2.0;
+  assert_status (carom_world_add_box (w, &d, 0.8, 0.8, NULL), CAROM_OK);
   return w;
 }
 
