@@ -41,6 +41,13 @@ struct carom_world;
 void bodies_init (struct carom_world *world);
 void bodies_destroy (struct carom_world *world);
 
+/* Make sure a slot is free and that removing a body later cannot fail
+ * for lack of room in the free list (TOO_MANY_BODIES, OUT_OF_MEMORY);
+ * changes no visible state. Then place a fully built shape, and what the
+ * def says, in that slot: cannot fail. */
+carom_status body_reserve_slot (struct carom_world *world);
+carom_body_id body_commit (struct carom_world *world, const carom_body_def *def, const shape *s);
+
 /* The live body an id names, or NULL. */
 body *body_lookup (const struct carom_world *world, carom_body_id id);
 carom_body_id body_id_of (const struct carom_world *world, int32_t slot);
