@@ -1,7 +1,8 @@
-/* Impacts under gravity with continuous collision: a bounce is the impulse
+/* Impacts. Under gravity with continuous collision a bounce is the impulse
  * of eq. 3.23 at its time within the step, with gravity before it, the
  * impact, and gravity after it, so bounce heights are those of the closed
- * form, e^(2k) h0, to rounding. */
+ * form, e^(2k) h0, to rounding. Without external forces, clusters of bodies
+ * keep their momentum and never gain energy. */
 #include "support.h"
 
 #include <math.h>
@@ -100,11 +101,82 @@ static void test_elastic_ball_keeps_its_height (void **state)
     }
 }
 
+/* Twelve bodies (boxes, pentagons, discs) thrown at one another with no
+ * gravity: linear momentum is kept to 1e-12 of its size and the kinetic
+ * energy never rises, for e = 0, 0.5 and 1, with and without friction and
+ * continuous collision. */
+static void cluster_totals (const carom_world *w, const carom_body_id *ids, int n, double *px, double *py, double *e)
+{
+  int i;
+  *px = *py = *e = 0.0;
+  for (i = 0; i < n; ++i)
+    {
+      double m, inertia, vx, vy, spin;
+      carom_body_get_mass (w, ids[i], &m, &inertia, NULL);
+      carom_body_get_velocity (w, ids[i], &vx, &vy);
+      carom_body_get_spin (w, ids[i], &spin);
+      *px += m * vx, *py += m * vy;
+      *e += 0.5 * m * (vx * vx + vy * vy) + 0.5 * inertia * spin * spin;
+    }
+}
+
+static void test_free_clusters_keep_momentum_and_never_gain_energy (void **state)
+{
+  static const double es[] = { 0.0, 0.5, 1.0 }, mus[] = { 0.0, 0.5 };
+  int ie, im, cont, i, step;
+  (void) state;
+  for (ie = 0; ie < 3; ++ie)
+    for (im = 0; im < 2; ++im)
+      for (cont = 0; cont < 2; ++cont)
+        {
+          carom_world *w = NULL;
+          carom_world_def def;
+          carom_body_id ids[12];
+          double px0, py0, e0, worst_p = 0.0, worst_e = 0.0;
+          uint32_t seed = 12345u;
+          carom_world_def_init (&def, sizeof def);
+          def.restitution = es[ie];
+          def.friction = mus[im];
+          assert_status (carom_world_init (&w, &def), CAROM_OK);
+          assert_status (carom_world_set_continuous (w, cont), CAROM_OK);
+          for (i = 0; i < 12; ++i)
+            {
+              carom_body_def d;
+              double a = 2.0 * M_PI * i / 12;
+              carom_body_def_init (&d, sizeof d);
+              seed = seed * 1103515245u + 12345u;
+              d.x = 4.0 * cos (a), d.y = 4.0 * sin (a), d.angle = a;
+              d.vx = -3.0 * cos (a) + (double) (seed >> 16) / 65536.0 - 0.5, d.vy = -3.0 * sin (a);
+              d.spin = (double) (seed & 0xffffu) / 16384.0 - 2.0;
+              if (i % 3 == 0)
+                assert_status (carom_world_add_box (w, &d, 0.8, 0.5, &ids[i]), CAROM_OK);
+              else if (i % 3 == 1)
+                assert_status (carom_world_add_regular (w, &d, 5, 0.5, &ids[i]), CAROM_OK);
+              else
+                assert_status (carom_world_add_circle (w, &d, 0.4, &ids[i]), CAROM_OK);
+            }
+          cluster_totals (w, ids, 12, &px0, &py0, &e0);
+          for (step = 0; step < 300; ++step)
+            {
+              double px, py, e;
+              assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
+              cluster_totals (w, ids, 12, &px, &py, &e);
+              worst_p = fmax (worst_p, hypot (px - px0, py - py0) / hypot (px0, py0));
+              worst_e = fmax (worst_e, e / e0 - 1.0);
+            }
+          if (!(worst_p < 1e-12) || !(worst_e <= 1e-12))
+            fail_msg ("e %g, mu %g, continuous %d: momentum off by %.3g, energy up by %.3g", es[ie], mus[im], cont,
+                      worst_p, worst_e);
+          carom_world_destroy (w);
+        }
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test (test_bounce_apexes_are_the_closed_form),
     cmocka_unit_test (test_elastic_ball_keeps_its_height),
+    cmocka_unit_test (test_free_clusters_keep_momentum_and_never_gain_energy),
   };
   return cmocka_run_group_tests_name ("impacts", tests, NULL, NULL);
 }
