@@ -391,11 +391,43 @@ static carom_status scene_do_circle (scene_parser *p)
   return scene_added (p, carom_world_add_circle (p->world, &p->body, p->num[0], &p->last));
 }
 
-static carom_status scene_do_box (scene_parser *p)
+/* The numbers of a box, a regular polygon and a polygon line, as a body
+ * or as a compound's shape: sizes positive, vertex counts in range (the
+ * count in *n). */
+static carom_status scene_box_sizes (scene_parser *p)
 {
   carom_status s = scene_positive (p, p->num[0], "width W", CAROM_ERR_BAD_SIZE);
   if (s == CAROM_OK)
     s = scene_positive (p, p->num[1], "height H", CAROM_ERR_BAD_SIZE);
+  return s;
+}
+
+static carom_status scene_regular_sizes (scene_parser *p, int32_t *n)
+{
+  carom_status s = scene_count (p, p->num[0], "N", 3, CAROM_MAX_POLYGON_VERTICES,
+                                p->num[0] < 3 ? CAROM_ERR_TOO_FEW_VERTICES : CAROM_ERR_TOO_MANY_VERTICES, n);
+  if (s == CAROM_OK)
+    s = scene_positive (p, p->num[1], "side length", CAROM_ERR_BAD_SIZE);
+  return s;
+}
+
+static carom_status scene_polygon_count (scene_parser *p, int32_t *n)
+{
+  *n = p->num_count / 2;
+  if (p->num_count % 2)
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "polygon: vertices come in X Y pairs, got %ld numbers",
+                       (long) p->num_count);
+  if (*n < 3)
+    return scene_fail (p, CAROM_ERR_TOO_FEW_VERTICES, "polygon: needs at least 3 vertices, got %ld", (long) *n);
+  if (*n > CAROM_MAX_POLYGON_VERTICES)
+    return scene_fail (p, CAROM_ERR_TOO_MANY_VERTICES, "polygon: at most %d vertices, got %ld",
+                       CAROM_MAX_POLYGON_VERTICES, (long) *n);
+  return CAROM_OK;
+}
+
+static carom_status scene_do_box (scene_parser *p)
+{
+  carom_status s = scene_box_sizes (p);
   if (s != CAROM_OK || !p->world)
     return s;
   return scene_added (p, carom_world_add_box (p->world, &p->body, p->num[0], p->num[1], &p->last));
@@ -404,13 +436,7 @@ static carom_status scene_do_box (scene_parser *p)
 static carom_status scene_do_regular (scene_parser *p)
 {
   int32_t n = 0;
-  carom_status s;
-  if (p->num[0] < 3)
-    s = scene_count (p, p->num[0], "N", 3, CAROM_MAX_POLYGON_VERTICES, CAROM_ERR_TOO_FEW_VERTICES, &n);
-  else
-    s = scene_count (p, p->num[0], "N", 3, CAROM_MAX_POLYGON_VERTICES, CAROM_ERR_TOO_MANY_VERTICES, &n);
-  if (s == CAROM_OK)
-    s = scene_positive (p, p->num[1], "side length", CAROM_ERR_BAD_SIZE);
+  carom_status s = scene_regular_sizes (p, &n);
   if (s != CAROM_OK || !p->world)
     return s;
   return scene_added (p, carom_world_add_regular (p->world, &p->body, n, p->num[1], &p->last));
@@ -418,16 +444,10 @@ static carom_status scene_do_regular (scene_parser *p)
 
 static carom_status scene_do_polygon (scene_parser *p)
 {
-  int32_t n = p->num_count / 2;
-  carom_status s;
-  if (p->num_count % 2)
-    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "polygon: vertices come in X Y pairs, got %ld numbers",
-                       (long) p->num_count);
-  if (n < 3)
-    return scene_fail (p, CAROM_ERR_TOO_FEW_VERTICES, "polygon: needs at least 3 vertices, got %ld", (long) n);
-  if (n > CAROM_MAX_POLYGON_VERTICES)
-    return scene_fail (p, CAROM_ERR_TOO_MANY_VERTICES, "polygon: at most %d vertices, got %ld",
-                       CAROM_MAX_POLYGON_VERTICES, (long) n);
+  int32_t n = 0;
+  carom_status s = scene_polygon_count (p, &n);
+  if (s != CAROM_OK)
+    return s;
   if (!p->world)
     {
       /* the world's own check, so the first pass sees geometry errors too */
@@ -499,7 +519,7 @@ static carom_status scene_try_compound (scene_parser *p, int32_t first, int32_t 
 static carom_status scene_do_part (scene_parser *p)
 {
   carom_shape_def *d;
-  int32_t n = 0, i;
+  int32_t n = 0;
   const char *what = p->tok[0];
   carom_status s = CAROM_OK;
   if (p->part_count >= CAROM_MAX_COMPOUND_SHAPES)
@@ -524,56 +544,21 @@ static carom_status scene_do_part (scene_parser *p)
     }
   else
     {
+      int box = strcmp (what, "box") == 0, regular = strcmp (what, "regular") == 0;
       d->kind = CAROM_SHAPE_POLYGON;
-      if (strcmp (what, "box") == 0)
-        {
-          n = 4;
-          s = scene_positive (p, p->num[0], "width W", CAROM_ERR_BAD_SIZE);
-          if (s == CAROM_OK)
-            s = scene_positive (p, p->num[1], "height H", CAROM_ERR_BAD_SIZE);
-        }
-      else if (strcmp (what, "regular") == 0)
-        {
-          if (p->num[0] < 3)
-            s = scene_count (p, p->num[0], "N", 3, CAROM_MAX_POLYGON_VERTICES, CAROM_ERR_TOO_FEW_VERTICES, &n);
-          else
-            s = scene_count (p, p->num[0], "N", 3, CAROM_MAX_POLYGON_VERTICES, CAROM_ERR_TOO_MANY_VERTICES, &n);
-          if (s == CAROM_OK)
-            s = scene_positive (p, p->num[1], "side length", CAROM_ERR_BAD_SIZE);
-        }
-      else
-        {
-          n = p->num_count / 2;
-          if (p->num_count % 2)
-            return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "polygon: vertices come in X Y pairs, got %ld numbers",
-                               (long) p->num_count);
-          if (n > CAROM_MAX_POLYGON_VERTICES)
-            return scene_fail (p, CAROM_ERR_TOO_MANY_VERTICES, "polygon: at most %d vertices, got %ld",
-                               CAROM_MAX_POLYGON_VERTICES, (long) n);
-        }
+      n = 4;
+      s = box ? scene_box_sizes (p) : regular ? scene_regular_sizes (p, &n) : scene_polygon_count (p, &n);
       if (s != CAROM_OK)
         return s;
       if (!mem_reserve (&p->allocator, (void **) &p->part_xy, &p->xy_cap, p->xy_count + 2 * n, sizeof *p->part_xy))
         return scene_fail (p, CAROM_ERR_OUT_OF_MEMORY, "out of memory");
-      for (i = 0; i < n; ++i)
-        {
-          double *v = p->part_xy + p->xy_count + 2 * i, sx = 0.5 * p->num[0], sy = 0.5 * p->num[1];
-          if (strcmp (what, "box") == 0)
-            {
-              /* counter-clockwise from the lower left corner, as add_box */
-              v[0] = (i == 0 || i == 3) ? -sx : sx;
-              v[1] = i < 2 ? -sy : sy;
-            }
-          else if (strcmp (what, "regular") == 0)
-            {
-              /* as add_regular: circumradius l / (2 sin(pi / n)), one vertex on +x */
-              double r = p->num[1] / (2.0 * sin (CAROM_PI / n)), t = 2.0 * CAROM_PI * i / n;
-              v[0] = r * cos (t);
-              v[1] = r * sin (t);
-            }
-          else
-            v[0] = p->num[2 * i], v[1] = p->num[2 * i + 1];
-        }
+      /* the outlines carom_world_add_box and _add_regular build */
+      if (box)
+        box_vertices (p->num[0], p->num[1], p->part_xy + p->xy_count);
+      else if (regular)
+        regular_vertices (n, p->num[1], p->part_xy + p->xy_count);
+      else
+        memcpy (p->part_xy + p->xy_count, p->num, (size_t) n * 2 * sizeof (double));
       d->count = n;
       p->xy_count += 2 * n;
     }

@@ -588,15 +588,33 @@ void shape_destroy (shape *s, const carom_allocator *a)
   s->piece_count = 0;
 }
 
+void box_vertices (double width, double height, double *xy)
+{
+  xy[0] = -0.5 * width, xy[1] = -0.5 * height;
+  xy[2] = 0.5 * width, xy[3] = -0.5 * height;
+  xy[4] = 0.5 * width, xy[5] = 0.5 * height;
+  xy[6] = -0.5 * width, xy[7] = 0.5 * height;
+}
+
+void regular_vertices (int32_t n, double side, double *xy)
+{
+  /* circumradius of a regular n-gon with side l: l / (2 sin(pi / n)) */
+  double radius = side / (2.0 * sin (CAROM_PI / n));
+  int32_t i;
+  for (i = 0; i < n; ++i)
+    {
+      double t = 2.0 * CAROM_PI * i / n;
+      xy[2 * i] = radius * cos (t);
+      xy[2 * i + 1] = radius * sin (t);
+    }
+}
+
 carom_status shape_init_box (shape *s, const carom_allocator *a, double width, double height)
 {
   double xy[8];
   vec2 centroid;
   carom_status st;
-  xy[0] = -0.5 * width, xy[1] = -0.5 * height;
-  xy[2] = 0.5 * width, xy[3] = -0.5 * height;
-  xy[4] = 0.5 * width, xy[5] = 0.5 * height;
-  xy[6] = -0.5 * width, xy[7] = 0.5 * height;
+  box_vertices (width, height, xy);
   st = shape_init_polygon (s, a, xy, 4, &centroid);
   /* eq. 3.4: I = m (w^2 + h^2) / 12, here per unit density (m = w h) */
   if (st == CAROM_OK)
@@ -606,21 +624,13 @@ carom_status shape_init_box (shape *s, const carom_allocator *a, double width, d
 
 carom_status shape_init_regular (shape *s, const carom_allocator *a, int32_t n, double side)
 {
-  double *xy, radius, area, cot;
+  double *xy, area, cot;
   vec2 centroid;
-  int32_t i;
   carom_status st;
   xy = mem_alloc (a, (size_t) n * 2 * sizeof (double));
   if (!xy)
     return CAROM_ERR_OUT_OF_MEMORY;
-  /* circumradius of a regular n-gon with side l: l / (2 sin(pi / n)) */
-  radius = side / (2.0 * sin (CAROM_PI / n));
-  for (i = 0; i < n; ++i)
-    {
-      double t = 2.0 * CAROM_PI * i / n;
-      xy[2 * i] = radius * cos (t);
-      xy[2 * i + 1] = radius * sin (t);
-    }
+  regular_vertices (n, side, xy);
   st = polygon_validate (xy, n);
   if (st == CAROM_OK)
     st = shape_init_polygon (s, a, xy, n, &centroid);

@@ -93,6 +93,11 @@ carom_status polygon_validate (const double *xy, int32_t n);
  * take their inertia from the closed forms (eq. 3.4, 3.6). */
 carom_status shape_init_circle (shape *s, double radius);
 carom_status shape_init_polygon (shape *s, const carom_allocator *a, const double *xy, int32_t n, vec2 *centroid);
+/* The outlines of a width x height box (4 points, counter-clockwise from
+ * the lower left) and of a regular n-gon with sides `side` (one vertex on
+ * +x), about the origin, into xy. */
+void box_vertices (double width, double height, double *xy);
+void regular_vertices (int32_t n, double side, double *xy);
 carom_status shape_init_box (shape *s, const carom_allocator *a, double width, double height);
 carom_status shape_init_regular (shape *s, const carom_allocator *a, int32_t n, double side);
 
