@@ -23,8 +23,9 @@
  *      rotation, wake, continuous collision for the world or one body), add
  *      a body, detect, calls with stale and made-up ids, and the calls of
  *      version 0.2 (forces, impulses, filters, user data, ray casts,
- *      queries, events, the debug draw, compound bodies and their shapes:
- *      op_api).
+ *      queries, events, the debug draw, compound bodies and their shapes,
+ *      joints of every type with fuzzed anchors, axes, limits, motors and
+ *      springs, and the joint calls: op_api).
  * After every operation every body's state and every contact must be finite.
  *
  * Extreme but finite values are fed to every call. include/carom.h bounds
@@ -66,6 +67,10 @@ typedef struct fuzz_world {
   int count;
   carom_body_id dead[16]; /* removed ids: stale for good */
   int dead_count;
+  carom_joint_id joints[32]; /* added joints (stale once a body of theirs goes) */
+  int joint_count;
+  carom_joint_id dead_joints[16];
+  int dead_joint_count;
 } fuzz_world;
 
 static int in_range (double v, double lo, double hi)
@@ -743,6 +748,161 @@ static void add_fuzzed_compound (fuzz_world *f)
   f->ids[f->count++] = id;
 }
 
+/* A joint of a fuzzed type between two of the bodies (or the world, a
+ * stale or a made-up body), with fuzzed anchors, axis, limits, motor and
+ * spring: refused with a status that applies and nothing changed, or
+ * accepted and then simulated. */
+static void add_fuzzed_joint (fuzz_world *f)
+{
+  carom_joint_def d;
+  carom_joint_id id = 99;
+  uint8_t flags = fuzz_u8 (&f->in), pick_a = fuzz_u8 (&f->in), pick_b = fuzz_u8 (&f->in);
+  int32_t before = carom_world_joint_count (f->w);
+  unsigned problems = 0, extreme = 0;
+  carom_body_type ta = CAROM_STATIC, tb = CAROM_STATIC;
+  carom_status s;
+  double values[14];
+  size_t i;
+  if (carom_joint_def_init (&d, sizeof d) != CAROM_OK)
+    FUZZ_FINDING ("joint_def_init failed");
+  d.type = (carom_joint_type) (fuzz_u8 (&f->in) % 8); /* 7: not a type */
+  d.a = f->count && pick_a < 200 ? f->ids[pick_a % f->count] : pick_a < 240 ? CAROM_NULL_BODY
+        : f->dead_count ? f->dead[pick_a % f->dead_count] : (carom_body_id) fuzz_u32 (&f->in);
+  d.b = f->count && pick_b < 220 ? f->ids[pick_b % f->count] : pick_b < 240 ? CAROM_NULL_BODY
+        : f->dead_count ? f->dead[pick_b % f->dead_count] : (carom_body_id) fuzz_u32 (&f->in);
+  if (d.type == CAROM_JOINT_MOUSE && (flags & 1))
+    d.a = CAROM_NULL_BODY;
+  /* anchors near the bodies, or fuzzed */
+  if (carom_body_get_position (f->w, d.b, &d.x, &d.y) != CAROM_OK)
+    d.x = d.y = 0.0;
+  d.x += (int8_t) fuzz_u8 (&f->in) * 0.125, d.y += (int8_t) fuzz_u8 (&f->in) * 0.125;
+  d.x2 = d.x + (int8_t) fuzz_u8 (&f->in) * 0.125, d.y2 = d.y + (int8_t) fuzz_u8 (&f->in) * 0.125;
+  d.axis_x = (int8_t) fuzz_u8 (&f->in), d.axis_y = (int8_t) fuzz_u8 (&f->in);
+  if (flags & 2)
+    d.x = fuzz_number (&f->in, 0), d.y2 = fuzz_number (&f->in, 0), d.axis_x = fuzz_number (&f->in, 0);
+  d.enable_limit = (flags & 4) != 0;
+  d.lower = (int8_t) fuzz_u8 (&f->in) * 0.05, d.upper = (int8_t) fuzz_u8 (&f->in) * 0.05;
+  if (flags & 8)
+    d.lower = fuzz_number (&f->in, 0);
+  d.enable_motor = (flags & 16) != 0;
+  d.motor_speed = (int8_t) fuzz_u8 (&f->in) * 0.5, d.max_motor_force = fuzz_u8 (&f->in) * 10.0;
+  d.max_motor_torque = fuzz_u8 (&f->in) * 10.0;
+  if (flags & 32)
+    d.motor_speed = fuzz_number (&f->in, 0), d.max_motor_force = fuzz_number (&f->in, 0);
+  d.enable_spring = (flags & 64) != 0;
+  d.hertz = fuzz_u8 (&f->in) * 0.25, d.damping_ratio = fuzz_u8 (&f->in) * 0.05;
+  if (flags & 128)
+    d.hertz = fuzz_number (&f->in, 0), d.damping_ratio = fuzz_number (&f->in, 0), d.length = fuzz_number (&f->in, 0);
+  d.collide_connected = fuzz_u8 (&f->in) & 1;
+  /* what include/carom.h says must be refused */
+  values[0] = d.x, values[1] = d.y, values[2] = d.x2, values[3] = d.y2, values[4] = d.axis_x, values[5] = d.axis_y;
+  values[6] = d.lower, values[7] = d.upper, values[8] = d.motor_speed, values[9] = d.max_motor_force;
+  values[10] = d.hertz, values[11] = d.damping_ratio, values[12] = d.length, values[13] = d.max_motor_torque;
+  for (i = 0; i < 14; ++i)
+    {
+      if (!isfinite (values[i]))
+        problems |= BIT (CAROM_ERR_NOT_FINITE);
+      if (too_big (values[i]))
+        problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
+    }
+  if (d.type > CAROM_JOINT_MOUSE || d.a == d.b || (d.type == CAROM_JOINT_MOUSE && d.a != CAROM_NULL_BODY)
+      || (d.enable_limit && d.lower > d.upper) || d.max_motor_force < 0.0 || d.max_motor_torque < 0.0
+      || d.hertz < 0.0 || d.damping_ratio < 0.0 || d.length < 0.0
+      || ((d.type == CAROM_JOINT_PRISMATIC || d.type == CAROM_JOINT_WHEEL) && d.axis_x == 0.0 && d.axis_y == 0.0))
+    problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
+  if (d.type == CAROM_JOINT_DISTANCE && d.length == 0.0 && d.x == d.x2 && d.y == d.y2)
+    problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
+  /* anchors that differ by rounding alone, axes that underflow */
+  extreme |= BIT (CAROM_ERR_BAD_ARGUMENT);
+  if ((d.a != CAROM_NULL_BODY && carom_body_get_type (f->w, d.a, &ta) != CAROM_OK)
+      || carom_body_get_type (f->w, d.b, &tb) != CAROM_OK)
+    problems |= BIT (CAROM_ERR_STALE_BODY);
+  else if (ta != CAROM_DYNAMIC && tb != CAROM_DYNAMIC)
+    problems |= BIT (CAROM_ERR_STATIC_BODY);
+  s = carom_world_add_joint (f->w, &d, &id);
+  TRACE ("add joint type %d: status %d\n", (int) d.type, (int) s);
+  if (!fuzz_known_status (s))
+    FUZZ_FINDING ("add_joint returned unknown status %d", (int) s);
+  if (problems != 0 ? s == CAROM_OK || !(problems & BIT (s)) : s != CAROM_OK && !(extreme & BIT (s)))
+    FUZZ_FINDING ("add_joint type %d returned %d (%s); problems 0x%x", (int) d.type, (int) s,
+                  carom_status_string (s), problems);
+  if (s != CAROM_OK)
+    {
+      if (id != 99 || carom_world_joint_count (f->w) != before)
+        FUZZ_FINDING ("a refused add_joint wrote *id or changed the joint count");
+      return;
+    }
+  if (carom_joint_check (f->w, id) != CAROM_OK || carom_world_joint_count (f->w) != before + 1)
+    FUZZ_FINDING ("an added joint is not live");
+  if (f->joint_count < 32)
+    f->joints[f->joint_count++] = id;
+}
+
+/* The calls on a joint: one of those added (maybe gone with a body since),
+ * a removed one or a made-up id, with fuzzed motor and target values. */
+static void op_joint (fuzz_world *f)
+{
+  uint8_t what = fuzz_u8 (&f->in) % 6, pick = fuzz_u8 (&f->in);
+  double a = fuzz_number (&f->in, 0), b = fuzz_number (&f->in, 0), c = fuzz_number (&f->in, 0);
+  carom_joint_id id = f->joint_count && pick < 200 ? f->joints[pick % f->joint_count]
+                      : f->dead_joint_count && pick < 230 ? f->dead_joints[pick % f->dead_joint_count]
+                                                          : (carom_joint_id) fuzz_u32 (&f->in) << 32 | fuzz_u32 (&f->in);
+  int live = carom_joint_check (f->w, id) == CAROM_OK, i;
+  carom_joint_type type = CAROM_JOINT_REVOLUTE;
+  carom_body_id ba, bb;
+  double x[4], fx, fy, t;
+  carom_status s;
+  int finite = isfinite (a) && isfinite (b) && isfinite (c), big = too_big (a) || too_big (b) || too_big (c);
+  for (i = 0; i < f->dead_joint_count; ++i)
+    if (carom_joint_check (f->w, f->dead_joints[i]) != CAROM_ERR_STALE_JOINT)
+      FUZZ_FINDING ("removed joint %d came back", i);
+  if (live && carom_joint_get_bodies (f->w, id, &type, &ba, &bb) != CAROM_OK)
+    FUZZ_FINDING ("a live joint's bodies cannot be read");
+  if (live && (carom_body_check (f->w, bb) != CAROM_OK || (ba != CAROM_NULL_BODY && carom_body_check (f->w, ba) != CAROM_OK)))
+    FUZZ_FINDING ("a live joint names a removed body");
+  TRACE ("joint call %d on %s joint: (%.17g, %.17g, %.17g)\n", what, live ? "a live" : "a stale", a, b, c);
+  switch (what)
+    {
+    case 0:
+      s = carom_joint_set_motor (f->w, id, 1, a, fabs (b));
+      if (!live ? s != CAROM_ERR_STALE_JOINT
+                : !finite ? s != CAROM_ERR_NOT_FINITE
+                : (big || type == CAROM_JOINT_MOTOR || type == CAROM_JOINT_MOUSE || type == CAROM_JOINT_WELD)
+                    ? s != CAROM_ERR_BAD_ARGUMENT && !(s == CAROM_ERR_NOT_FINITE && !isfinite (b))
+                    : s != CAROM_OK)
+        FUZZ_FINDING ("set_motor (%.17g, %.17g) on a %s joint of type %d returned %d", a, b,
+                      live ? "live" : "stale", (int) type, (int) s);
+      break;
+    case 1:
+      s = carom_joint_set_target (f->w, id, a, b, c);
+      if (!live ? s != CAROM_ERR_STALE_JOINT
+                : !finite ? s != CAROM_ERR_NOT_FINITE
+                : (big || (type != CAROM_JOINT_MOTOR && type != CAROM_JOINT_MOUSE)) ? s != CAROM_ERR_BAD_ARGUMENT
+                                                                                     : s != CAROM_OK)
+        FUZZ_FINDING ("set_target on a %s joint of type %d returned %d", live ? "live" : "stale", (int) type, (int) s);
+      break;
+    case 2:
+      s = carom_world_remove_joint (f->w, id);
+      if (s != (live ? CAROM_OK : CAROM_ERR_STALE_JOINT))
+        FUZZ_FINDING ("remove_joint of a %s joint returned %d", live ? "live" : "stale", (int) s);
+      if (live && f->dead_joint_count < 16)
+        f->dead_joints[f->dead_joint_count++] = id;
+      break;
+    default:
+      s = carom_joint_get_reaction (f->w, id, &fx, &fy, &t);
+      if (s == CAROM_OK && (!isfinite (fx) || !isfinite (fy) || !isfinite (t)))
+        FUZZ_FINDING ("a joint's reaction is not finite");
+      if (carom_joint_get_anchors (f->w, id, &x[0], &x[1], &x[2], &x[3]) != s)
+        FUZZ_FINDING ("get_anchors and get_reaction disagree about the id");
+      if (s != (live ? CAROM_OK : CAROM_ERR_STALE_JOINT))
+        FUZZ_FINDING ("get_reaction of a %s joint returned %d", live ? "live" : "stale", (int) s);
+      for (i = 0; s == CAROM_OK && i < 4; ++i)
+        if (!isfinite (x[i]))
+          FUZZ_FINDING ("a joint's anchor is not finite");
+      break;
+    }
+}
+
 /* Forces, impulses, filters, user data, ray casts, queries, events and the
  * debug draw with fuzzed arguments: non-finite numbers give NOT_FINITE,
  * ones beyond CAROM_MAX_MAGNITUDE BAD_ARGUMENT (also a sum or a resulting
@@ -752,7 +912,7 @@ static void add_fuzzed_compound (fuzz_world *f)
 static void op_api (fuzz_world *f)
 {
   state before[64];
-  uint8_t what = fuzz_u8 (&f->in) % 11;
+  uint8_t what = fuzz_u8 (&f->in) % 13;
   int k = f->count ? fuzz_u8 (&f->in) % f->count : 0;
   double a = fuzz_number (&f->in, 0), b = fuzz_number (&f->in, 0), c = fuzz_number (&f->in, 0),
          d = fuzz_number (&f->in, 0);
@@ -765,6 +925,16 @@ static void op_api (fuzz_world *f)
   if (what == 10)
     {
       add_fuzzed_compound (f);
+      return;
+    }
+  if (what == 11)
+    {
+      add_fuzzed_joint (f);
+      return;
+    }
+  if (what == 12)
+    {
+      op_joint (f);
       return;
     }
   if (f->count == 0 && what < 6)

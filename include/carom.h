@@ -68,6 +68,8 @@ typedef enum carom_status {
   CAROM_ERR_STATIC_BODY = 16,       /**< the call needs a dynamic body */
   CAROM_ERR_SCENE_SYNTAX = 17,      /**< a scene file line is malformed */
   CAROM_ERR_IO = 18,                /**< a file could not be read */
+  CAROM_ERR_STALE_JOINT = 19,       /**< joint id is unknown or was removed
+                                         (version 0.2) */
   CAROM_STATUS_FORCE_32 = 0x7fffffff
 } carom_status;
 
@@ -626,6 +628,158 @@ CAROM_API int32_t carom_world_get_events (const carom_world *world,
                                           carom_contact_event *events,
                                           int32_t capacity);
 
+/* ----------------------------------------------------------------- joints */
+
+/** A joint's id: a slot index and a generation. 0 is never a valid id
+ * (version 0.2). */
+typedef uint64_t carom_joint_id;
+#define CAROM_NULL_JOINT ((carom_joint_id)0)
+
+/**
+ * What a joint holds (docs/joints.md). Every joint is a constraint of the
+ * same sub-stepped solver as the contacts, and soft: it corrects its error
+ * at a stiffness tied to the sub-step, so it stays stable at large mass
+ * ratios, and is rigid again in the relax pass after each sub-step's move.
+ */
+typedef enum carom_joint_type {
+  /** a shared point: b turns about the anchor on a; limit: the relative
+   * angle; motor: the relative spin, with max_motor_force a torque; spring:
+   * a torsion spring towards the angle at creation */
+  CAROM_JOINT_REVOLUTE = 0,
+  /** b slides along the axis fixed in a, without turning relative to a;
+   * limit and spring: the translation along the axis from creation;
+   * motor: the sliding speed */
+  CAROM_JOINT_PRISMATIC = 1,
+  /** the anchors keep their distance (length, or their distance at
+   * creation); spring: a spring of that rest length; limit: the length
+   * stays in [lower, upper]; motor: the rate the length changes at */
+  CAROM_JOINT_DISTANCE = 2,
+  /** b is fixed to a; spring: softly, at hertz and damping_ratio */
+  CAROM_JOINT_WELD = 3,
+  /** the anchor on b stays on the axis through the anchor on a (b turns
+   * freely): a wheel on a suspension; spring: along the axis; limit: the
+   * translation along it; motor: the wheel's spin relative to a (a torque) */
+  CAROM_JOINT_WHEEL = 4,
+  /** b is driven towards its pose relative to a at creation (or set by
+   * carom_joint_set_target), with at most max_motor_force and
+   * max_motor_torque */
+  CAROM_JOINT_MOTOR = 5,
+  /** the point of b at (x, y) is pulled towards a target that moves
+   * (carom_joint_set_target): a soft spring of hertz (0: 5 Hz) and
+   * damping_ratio (0: 0.7) with at most max_motor_force (0: no bound);
+   * a must be CAROM_NULL_BODY */
+  CAROM_JOINT_MOUSE = 6,
+  CAROM_JOINT_TYPE_FORCE_32 = 0x7fffffff
+} carom_joint_type;
+
+/** Joint settings. Fill with carom_joint_def_init (everything 0), then set
+ * the fields its type uses; the others are ignored. */
+typedef struct carom_joint_def {
+  uint32_t size;          /**< the caller's sizeof, set by def_init */
+  carom_joint_type type;
+  carom_body_id a, b;     /**< the bodies; a may be CAROM_NULL_BODY for the
+                               world itself (a fixed point); b must be a
+                               body, and one of them dynamic */
+  double x, y;            /**< the anchor in world coordinates at creation
+                               (distance: the anchor on a; mouse: the point
+                               of b grabbed, and the first target) */
+  double x2, y2;          /**< distance: the anchor on b */
+  double axis_x, axis_y;  /**< prismatic, wheel: the axis in world
+                               coordinates (any non-zero length) */
+  int32_t enable_limit;
+  double lower, upper;    /**< relative angle, translation or length;
+                               lower <= upper */
+  int32_t enable_motor;
+  double motor_speed;     /**< rad per time unit, or length per time unit */
+  double max_motor_force; /**< >= 0; a torque for revolute and wheel */
+  int32_t enable_spring;
+  double hertz;           /**< the spring's frequency, >= 0 (0: rigid) */
+  double damping_ratio;   /**< >= 0; 1 is critical damping */
+  int32_t collide_connected; /**< non-zero: a and b still collide */
+  double length;          /**< distance: the rest length, > 0; 0 for the
+                               anchors' distance at creation */
+  double max_motor_torque; /**< motor joint: the most torque, >= 0 */
+} carom_joint_def;
+
+/** Fill `def` with zeros and set its size field to `size` (the caller's
+ * sizeof). Errors: NULL_ARGUMENT, BAD_STRUCT_SIZE. */
+CAROM_API carom_status carom_joint_def_init (carom_joint_def *def,
+                                             uint32_t size);
+
+/**
+ * Add a joint between def->a and def->b. It wakes both. The bodies stop
+ * colliding with each other unless collide_connected. On success *id names
+ * it (id may be NULL). Errors: NULL_ARGUMENT, BAD_STRUCT_SIZE, NOT_FINITE,
+ * STALE_BODY, BAD_ARGUMENT (an unknown type, a == b, a not NULL for a mouse
+ * joint, a zero axis, anchors that coincide for a distance joint without a
+ * length, lower > upper, a negative force, torque, hertz, damping ratio
+ * or length, a magnitude beyond CAROM_MAX_MAGNITUDE), STATIC_BODY (neither
+ * body is dynamic), OUT_OF_MEMORY.
+ */
+CAROM_API carom_status carom_world_add_joint (carom_world *world,
+                                              const carom_joint_def *def,
+                                              carom_joint_id *id);
+
+/** Remove a joint (removing a body removes its joints, whose ids are then
+ * refused as stale). Errors: NULL_ARGUMENT, STALE_JOINT. */
+CAROM_API carom_status carom_world_remove_joint (carom_world *world,
+                                                 carom_joint_id id);
+
+/** OK if `id` names a live joint, else STALE_JOINT (NULL_ARGUMENT). */
+CAROM_API carom_status carom_joint_check (const carom_world *world,
+                                          carom_joint_id id);
+
+/** How many live joints the world holds (0 for NULL). */
+CAROM_API int32_t carom_world_joint_count (const carom_world *world);
+
+/** The joint's type and bodies (a is CAROM_NULL_BODY for the world); any
+ * output may be NULL. Errors: NULL_ARGUMENT, STALE_JOINT. */
+CAROM_API carom_status carom_joint_get_bodies (const carom_world *world,
+                                               carom_joint_id id,
+                                               carom_joint_type *type,
+                                               carom_body_id *a,
+                                               carom_body_id *b);
+
+/** The two anchors now, in world coordinates (mouse: b's point and the
+ * target); any output may be NULL. Errors: NULL_ARGUMENT, STALE_JOINT. */
+CAROM_API carom_status carom_joint_get_anchors (const carom_world *world,
+                                                carom_joint_id id,
+                                                double *ax, double *ay,
+                                                double *bx, double *by);
+
+/**
+ * The constraint force (fx, fy) and torque on body b, averaged over the
+ * last update: all the impulse the joint gave b in it, over its dt; the
+ * force acts at b's anchor, the torque is the part of the joint's moment
+ * that is not the force's (0 for a distance or mouse joint). Zero before
+ * the first update. Any output may be NULL. Errors: NULL_ARGUMENT,
+ * STALE_JOINT.
+ */
+CAROM_API carom_status carom_joint_get_reaction (const carom_world *world,
+                                                 carom_joint_id id,
+                                                 double *fx, double *fy,
+                                                 double *torque);
+
+/** Turn the motor on or off and set its speed and its most force (a torque
+ * for revolute and wheel joints); wakes the bodies. Errors: NULL_ARGUMENT,
+ * STALE_JOINT, NOT_FINITE, BAD_ARGUMENT (a weld, motor or mouse joint, a
+ * negative force, a magnitude beyond CAROM_MAX_MAGNITUDE). */
+CAROM_API carom_status carom_joint_set_motor (carom_world *world,
+                                              carom_joint_id id,
+                                              int32_t enable, double speed,
+                                              double max_force);
+
+/**
+ * Move a joint's target; wakes its bodies. Mouse joint: the world point
+ * (x, y) b's grabbed point is pulled to (angle ignored). Motor joint: the
+ * pose b is driven to, as b's centre in a's frame and b's angle less a's.
+ * Errors: NULL_ARGUMENT, STALE_JOINT, NOT_FINITE, BAD_ARGUMENT (another
+ * type, a magnitude beyond CAROM_MAX_MAGNITUDE).
+ */
+CAROM_API carom_status carom_joint_set_target (carom_world *world,
+                                               carom_joint_id id, double x,
+                                               double y, double angle);
+
 /* ------------------------------------------------------------- debug draw */
 
 /**
@@ -649,6 +803,13 @@ typedef struct carom_debug_draw {
   int32_t draw_bodies;    /**< default 1 */
   int32_t draw_contacts;  /**< points and normals of the last update's
                                contacts; default 1 */
+  /* ---- version 0.2, joints */
+  /** a joint: xy holds four points, the centre of body a, the anchor on
+   * a, the anchor on b and the centre of body b (for a joint to the world
+   * the first two are its fixed point; for a mouse joint, its target) */
+  void (*joint) (carom_joint_type type, const double *xy, carom_joint_id id,
+                 void *user);
+  int32_t draw_joints;    /**< default 1 */
 } carom_debug_draw;
 
 /** Fill `draw` with no callbacks and the defaults above. Errors:
@@ -656,7 +817,9 @@ typedef struct carom_debug_draw {
 CAROM_API carom_status carom_debug_draw_init (carom_debug_draw *draw,
                                               uint32_t size);
 
-/** Draw every live body in creation order, then the contacts. Errors:
+/** Draw every live body in slot order, then the joints, then the
+ * contacts. A carom_debug_draw without the joint fields (its size ends at
+ * draw_contacts) is accepted too. Errors:
  * NULL_ARGUMENT, BAD_STRUCT_SIZE. */
 CAROM_API carom_status carom_world_draw (const carom_world *world,
                                          const carom_debug_draw *draw);
@@ -677,6 +840,7 @@ typedef enum carom_effect {
   CAROM_EFFECT_DAMPING = 1 << 5,         /**< linear or angular damping */
   CAROM_EFFECT_SLEEPING = 1 << 6,        /**< bodies at rest are put to sleep */
   CAROM_EFFECT_CONTINUOUS = 1 << 7,      /**< fast bodies never tunnel */
+  CAROM_EFFECT_JOINTS = 1 << 8,          /**< the world has a joint (0.2) */
   CAROM_EFFECT_FORCE_32 = 0x7fffffff
 } carom_effect;
 
@@ -684,8 +848,8 @@ typedef enum carom_effect {
 CAROM_API uint32_t carom_world_get_effects (const carom_world *world);
 
 /** Name of one effect ("gravity", "central-gravity", "restitution",
- * "friction", "fixed-rotation", "damping", "sleeping", "continuous"), or
- * NULL. */
+ * "friction", "fixed-rotation", "damping", "sleeping", "continuous",
+ * "joints"), or NULL. */
 CAROM_API const char *carom_effect_name (carom_effect effect);
 
 /** Default restitution e in [0, 1] and friction mu >= 0 for bodies that

@@ -184,6 +184,7 @@ carom_status carom_world_remove_body (carom_world *world, carom_body_id id)
     return CAROM_ERR_STALE_BODY;
   slot = (int32_t) (b - world->bodies);
   contacts_forget_body (world, slot); /* also wakes the bodies it touched */
+  joints_forget_body (world, slot);   /* and those it was joined to */
   shape_destroy (&b->shape, &world->allocator);
   world->sensor_count -= b->sensor;
   b->alive = 0;

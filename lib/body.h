@@ -34,6 +34,8 @@ typedef struct body {
   uint32_t category, mask;
   int32_t group;
   int32_t sensor;         /* reports overlaps, takes part in no contact */
+  int32_t joint_head;     /* its first joint, as joint.h's next[] (0: none) */
+  int32_t joint_count;    /* how many joints it has */
 } body;
 
 struct carom_world;

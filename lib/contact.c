@@ -382,7 +382,7 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
     }
   A = &world->bodies[a];
   B = &world->bodies[b];
-  if (!body_filters_pass (A, B))
+  if (!body_filters_pass (A, B) || joints_block_pair (world, a, b))
     return;
   if (A->sensor || B->sensor)
     {

@@ -4,7 +4,7 @@
 #include "world.h"
 
 static const char *const effect_names[] = {
-  "gravity", "central-gravity", "restitution", "friction", "fixed-rotation", "damping", "sleeping", "continuous",
+  "gravity", "central-gravity", "restitution", "friction", "fixed-rotation", "damping", "sleeping", "continuous", "joints",
 };
 
 const char *carom_effect_name (carom_effect effect)
@@ -36,6 +36,8 @@ uint32_t carom_world_get_effects (const carom_world *world)
     e |= CAROM_EFFECT_SLEEPING;
   if (world->continuous)
     e |= CAROM_EFFECT_CONTINUOUS;
+  if (world->joints.live > 0)
+    e |= CAROM_EFFECT_JOINTS;
   for (i = 0; i < world->slot_count; ++i)
     {
       const body *b = &world->bodies[i];

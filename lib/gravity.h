@@ -14,6 +14,13 @@ struct carom_world;
  * when it is on; nothing at all when both are off. */
 void gravity_kick (struct carom_world *world, const step_context *ctx);
 
+/* Bodies held by joints (CONSTRAINED_JOINT) take the uniform kick in two
+ * halves, one before the sub-step's move and one after (leapfrog):
+ * gravity_joint_hold takes back the half of gravity_kick's kick that is
+ * due after the move, gravity_joint_kick gives it then. */
+void gravity_joint_hold (struct carom_world *world, const step_context *ctx);
+void gravity_joint_kick (struct carom_world *world, const step_context *ctx);
+
 /* The velocity a body moves with over a sub-step. A free body moves with
  * the mean of its velocities before and after the uniform kick,
  * x += (v - g h / 2) h, which is x0 + v0 t + g t^2 / 2 at every sub-step:

@@ -1,7 +1,9 @@
 /* Sleeping: bodies that stay slow for a while stop being simulated until
  * something touches them faster than that. Per body, without islands: a
  * resting pile falls asleep together because all its bodies are slow, and
- * wakes from where it is hit outwards, one contact layer per sub-step. */
+ * wakes from where it is hit outwards, one contact layer per sub-step.
+ * Bodies joined by joints are the exception: they sleep together, when the
+ * last of them has been slow long enough, and wake together. */
 #ifndef CAROM_SLEEP_H
 #define CAROM_SLEEP_H
 

@@ -22,6 +22,7 @@
 #include "damping.h"
 #include "force.h"
 #include "gravity.h"
+#include "joint.h"
 #include "world.h"
 
 #include <string.h>
@@ -62,8 +63,10 @@ static void gather (carom_world *world)
       sb[i].constrained = moves == MOVES_KINEMATIC;
       sb[i].moves = moves;
     }
-  /* the inert body of the batches' unused lanes (contact_batch.h) */
+  /* the inert body of the batches' unused lanes (contact_batch.h), and
+   * the ground of joints to the world: never moved, never turned */
   memset (&sb[world->slot_count], 0, sizeof *sb);
+  sb[world->slot_count].dq.c = 1.0;
 }
 
 /* Move every body the sub-steps move by its velocity over one sub-step.
@@ -125,7 +128,7 @@ int solver_reserve (carom_world *world)
                          2 * world->contacts.count + 2 * CONSTRAINT_COLOURS + 1, sizeof (int32_t))
          && mem_reserve (&world->allocator, (void **) &world->solver_scratch, &world->scratch_cap, need,
                          sizeof (int32_t))
-         && contact_shock_reserve (world)
+         && contact_shock_reserve (world) && joint_tree_reserve (world)
          && mem_reserve (&world->allocator, (void **) &world->restitution_list, &world->restitution_cap,
                          world->contacts.count, sizeof (int32_t));
 }
@@ -136,6 +139,7 @@ void solver_destroy (carom_world *world)
   mem_free (&world->allocator, world->solver_scratch, (size_t) world->scratch_cap * sizeof (int32_t));
   mem_free (&world->allocator, world->restitution_list, (size_t) world->restitution_cap * sizeof (int32_t));
   contact_shock_destroy (world);
+  joint_tree_destroy (world);
   mem_free (&world->allocator, world->batches, (size_t) world->batch_cap * sizeof (contact_batch));
   mem_free (&world->allocator, world->colour_used, (size_t) world->colour_cap * sizeof (uint32_t));
   mem_free (&world->allocator, world->batch_scratch, (size_t) world->batch_scratch_cap * sizeof (int32_t));
@@ -152,8 +156,11 @@ void solver_destroy (carom_world *world)
 void solver_step (carom_world *world, const step_context *ctx)
 {
   int contacts = world->contacts.count > 0;
+  int joints = world->joints.live > 0;
   int32_t k, it;
   gather (world);
+  if (joints)
+    joint_prepare (world, ctx);
   if (contacts)
     {
       contact_prepare (world, ctx);
@@ -163,17 +170,29 @@ void solver_step (carom_world *world, const step_context *ctx)
   for (k = 0; k < ctx->substeps; ++k)
     {
       gravity_kick (world, ctx);
+      if (joints)
+        gravity_joint_hold (world, ctx);
       force_kick (world, ctx);
       damping_update (world, ctx);
+      if (joints)
+        joint_warm_start (world);
       if (contacts)
         {
           contact_batch_warm_start (world);
           contact_warm_start (world, ctx->dt - k * ctx->h);
-          for (it = 0; it < ctx->iterations; ++it)
+        }
+      for (it = 0; it < ctx->iterations; ++it)
+        {
+          if (joints)
+            joint_solve (world, ctx, 1);
+          if (contacts)
             {
               contact_batch_solve (world, ctx);
               contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, 0);
             }
+        }
+      if (contacts)
+        {
           if (world->contacts.fine_count > 0)
             for (; it < SOLVE_MAX_ITERATIONS; ++it)
               if (!(contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, 1) > ctx->converged))
@@ -187,15 +206,26 @@ void solver_step (carom_world *world, const step_context *ctx)
         }
       integrate_positions (world, ctx);
       force_drift_undo (world, ctx);
-      if (contacts)
+      if (joints)
         {
-          for (it = 0; it < ctx->iterations; ++it)
+          joint_project (world, ctx);
+          gravity_joint_kick (world, ctx);
+        }
+      /* relax: the velocity errors alone, without the joints' correction */
+      for (it = 0; it < ctx->iterations; ++it)
+        {
+          if (joints)
+            joint_solve (world, ctx, 0);
+          if (contacts)
             {
               contact_batch_solve (world, ctx);
               contact_solve (world, ctx, k + 1, ctx->dt - (k + 1) * ctx->h, 0);
             }
-          contact_shock (world, ctx);
         }
+      if (contacts)
+        contact_shock (world, ctx);
+      if (joints)
+        joint_sum_reaction (world);
     }
   if (contacts)
     {
@@ -203,5 +233,7 @@ void solver_step (carom_world *world, const step_context *ctx)
       contact_restitution (world, ctx);
       contact_time_of_impact (world, ctx);
     }
+  if (joints)
+    joint_finish (world, ctx);
   finish (world);
 }

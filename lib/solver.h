@@ -22,10 +22,12 @@ enum {
 /* solver_body.constrained: some constraint acts on the body this step (it
  * moves by symplectic Euler, see gravity_drift_velocity); one of its
  * contacts held it at detection (touching, or apart but not closing); its
- * drift was corrected after an impact (contact_time_of_impact). */
+ * drift was corrected after an impact (contact_time_of_impact); a joint
+ * holds it. */
 #define CONSTRAINED_ANY 1
 #define CONSTRAINED_HELD 2
 #define CONSTRAINED_DRIFT_FIXED 4
+#define CONSTRAINED_JOINT 8 /* a joint holds it (joint_solver.c, gravity.c) */
 
 typedef struct solver_body {
   vec2 v;

@@ -29,6 +29,7 @@ const char *carom_status_string (carom_status status)
     case CAROM_ERR_STATIC_BODY: return "the call needs a dynamic body";
     case CAROM_ERR_SCENE_SYNTAX: return "a scene line is malformed";
     case CAROM_ERR_IO: return "a file could not be read";
+    case CAROM_ERR_STALE_JOINT: return "the joint id is unknown or the joint was removed";
     case CAROM_STATUS_FORCE_32: break;
     }
   return "unknown status";

@@ -1,5 +1,6 @@
 #include "step.h"
 
+#include "joint.h"
 #include "world.h"
 
 /* Below this multiple of what gravity adds in a step, an approach does not
@@ -29,6 +30,7 @@ void step_context_init (step_context *ctx, const carom_world *world, double dt)
   ctx->restitution_threshold = RESTITUTION_THRESHOLD_STEPS * ctx->accel * dt;
   ctx->push_rate = world->def.position_correction * ctx->inv_h;
   ctx->converged = ctx->accel > 0.0 ? SOLVE_CONVERGED * ctx->accel * ctx->h : INFINITY;
+  ctx->joint_hold = joint_hold_soft (ctx->h);
   ctx->sensor_reach = 0.0;
   if (world->sensor_count > 0)
     {

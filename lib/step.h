@@ -9,6 +9,13 @@
 
 #include "vec2.h"
 
+/* A soft constraint's coefficients for one sub-step of length h (Catto's
+ * "soft step"; joint.h): the impulse of a pass is
+ * -mass_scale m (Cdot + bias_rate C) - impulse_scale (impulse so far). */
+typedef struct joint_soft {
+  double bias_rate, mass_scale, impulse_scale;
+} joint_soft;
+
 typedef struct step_context {
   double dt, inv_dt;     /* the whole update; detection looks this far ahead */
   double h, inv_h;       /* one sub-step */
@@ -27,6 +34,8 @@ typedef struct step_context {
   double push_rate;      /* overlap pushed out per unit time: position_correction / h */
   double converged;      /* a solve pass that changes no normal speed by more
                             than this ends the sub-step's passes (solver.c) */
+  joint_soft joint_hold;  /* how a joint corrects its error in a sub-step's
+                            solve (joint_hold_soft) */
   double sensor_reach;   /* how far the fastest body can travel in dt, when
                             the world has a sensor (broadphase.c); else 0 */
 } step_context;

@@ -54,6 +54,7 @@ carom_status carom_world_init (carom_world **world, const carom_world_def *def)
   bodies_init (w);
   broadphase_init (w);
   contacts_init (w);
+  joints_init (w);
   *world = w;
   return CAROM_OK;
 }
@@ -66,6 +67,7 @@ void carom_world_destroy (carom_world *world)
   solver_destroy (world);
   events_destroy (world);
   contacts_destroy (world);
+  joints_destroy (world);
   broadphase_destroy (world);
   bodies_destroy (world);
   a = world->allocator;

@@ -7,6 +7,7 @@
 #include "contact.h"
 #include "broadphase.h"
 #include "events.h"
+#include "joint.h"
 
 struct carom_world {
   carom_allocator allocator;
@@ -21,6 +22,8 @@ struct carom_world {
 
   broadphase broad;
   contacts contacts;
+  joints joints;
+  joint_tree joint_tree;               /* the joints' direct solve (joint_tree.c) */
   struct solver_body *solver_bodies; /* one per slot (solver.c) */
   int32_t solver_cap;
   int32_t *solver_scratch;           /* shock propagation's levels and order */

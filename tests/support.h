@@ -54,7 +54,8 @@ double world_kinetic_energy (const carom_world *world);
  * every live body (id, pose, velocities, inverse masses, materials, sleep,
  * pending forces, user data, filter, sensor), the last update's events,
  * every contact with the impulses it carries to the next step and its
- * manifold's reuse data. Equal only for bit-identical states. */
+ * manifold's reuse data, and every joint with what it holds and carries.
+ * Equal only for bit-identical states. */
 uint64_t world_state_hash (const carom_world *world);
 /* Total linear momentum and angular momentum about the origin. */
 void world_momentum (const carom_world *world, double *px, double *py, double *l);

@@ -123,7 +123,7 @@ typedef struct contact_state {
 } contact_state;
 
 typedef struct world_state {
-  int32_t body_count, contact_count, event_count;
+  int32_t body_count, contact_count, event_count, joint_count;
   body_state bodies[MAX_IDS];
   contact_state contacts[256];
   carom_contact_event events[64];
@@ -135,6 +135,7 @@ static void snapshot (const carom_world *w, world_state *s)
   int32_t i;
   memset (s, 0, sizeof *s);
   s->body_count = carom_world_get_bodies (w, ids, MAX_IDS);
+  s->joint_count = carom_world_joint_count (w);
   assert_true (s->body_count <= MAX_IDS);
   assert_int_equal (s->body_count, carom_world_body_count (w));
   for (i = 0; i < s->body_count; ++i)
@@ -175,6 +176,11 @@ static int same_state (const world_state *a, const world_state *b, char *why, si
                   b->bodies[i].vy);
         return 0;
       }
+  if (a->joint_count != b->joint_count)
+    {
+      snprintf (why, why_size, "the joint count went from %d to %d", (int) a->joint_count, (int) b->joint_count);
+      return 0;
+    }
   if (a->event_count != b->event_count || memcmp (a->events, b->events, sizeof a->events) != 0)
     {
       snprintf (why, why_size, "the events changed (%d, then %d of them)", (int) a->event_count,
@@ -223,9 +229,11 @@ typedef enum step_kind {
   ADD_SENSOR,
   ADD_KINEMATIC,
   ADD_COMPOUND,
+  ADD_JOINTS,
   DETECT,
   UPDATE,
   REMOVE,
+  REMOVE_JOINT,
   PUSH,
   QUERY
 } step_kind;
@@ -238,6 +246,7 @@ typedef struct scenario {
   int oom_calls;          /* calls that returned OUT_OF_MEMORY */
   int32_t max_contacts;   /* most contact points seen after a step */
   carom_body_id circle, box;
+  carom_joint_id hinge;   /* the box's joint to the world (ADD_JOINTS) */
   /* the same calls on a world whose allocations never fail (FAIL_ONCE) */
   carom_world *ref;
   world_state *ref_state; /* after its last call */
@@ -325,6 +334,41 @@ static carom_status do_step (scenario *sc, carom_world *w, step_kind kind)
       return carom_world_update (w, 1.0 / 60.0);
     case REMOVE:
       return carom_world_remove_body (w, sc->circle);
+    case REMOVE_JOINT:
+      return carom_world_remove_joint (w, sc->hinge);
+    case ADD_JOINTS: /* the box hinged to the world, the circle roped to it, a mouse on the compound */
+      {
+        carom_joint_def d;
+        carom_joint_id ids[3] = { 777, 777, 777 };
+        carom_body_id all[16];
+        int32_t n = carom_world_get_bodies (w, all, 16);
+        carom_joint_def_init (&d, sizeof d);
+        d.type = CAROM_JOINT_REVOLUTE, d.b = sc->box, d.x = 1.0, d.y = 3.0;
+        s = carom_world_add_joint (w, &d, &ids[0]);
+        if (s == CAROM_OK)
+          {
+            d.type = CAROM_JOINT_DISTANCE, d.a = sc->box, d.b = sc->circle, d.x2 = -1.0, d.y2 = 1.0;
+            d.enable_spring = 1, d.hertz = 2.0;
+            s = carom_world_add_joint (w, &d, &ids[1]);
+          }
+        if (s == CAROM_OK)
+          {
+            carom_joint_def_init (&d, sizeof d);
+            d.type = CAROM_JOINT_MOUSE, d.b = all[n - 1], d.x = -8.0, d.y = 1.2, d.max_motor_force = 100.0;
+            s = carom_world_add_joint (w, &d, &ids[2]);
+          }
+        if (s != CAROM_OK)
+          {
+            /* each call is checked alone: undo the ones that went in */
+            int i;
+            for (i = 0; i < 3; ++i)
+              if (ids[i] != 777)
+                assert_status (carom_world_remove_joint (w, ids[i]), CAROM_OK);
+            return s;
+          }
+        sc->hinge = ids[0];
+        return CAROM_OK;
+      }
     case PUSH: /* forces and impulses allocate nothing; they act on the next update */
       s = carom_body_apply_force (w, sc->box, 5.0, 0.0, 0.1, 0.6);
       if (s == CAROM_OK)
@@ -388,8 +432,8 @@ static void reference_step (scenario *sc, step_kind kind)
 static const char *step_name (step_kind kind)
 {
   static const char *names[] = { "add ground", "add circle", "add box", "add regular", "add U",
-                                 "add late box", "add sensor", "add kinematic", "add compound", "detect", "update", "remove",
-                                 "push", "query" };
+                                 "add late box", "add sensor", "add kinematic", "add compound", "add joints", "detect", "update", "remove",
+                                 "remove joint", "push", "query" };
   return names[kind];
 }
 
@@ -485,6 +529,9 @@ static int run_scenario (checking_alloc *c, long k, int mode, carom_narrow_phase
         goto out;
       assert_int_equal (carom_world_body_count (sc.w), ++bodies);
     }
+  if (!checked_call (&sc, ADD_JOINTS))
+    goto out;
+  assert_int_equal (carom_world_joint_count (sc.w), 3);
   if (!checked_call (&sc, DETECT))
     goto out;
   assert_true (carom_world_contact_count (sc.w) > 0);
@@ -506,6 +553,14 @@ static int run_scenario (checking_alloc *c, long k, int mode, carom_narrow_phase
           if (!checked_call (&sc, ADD_LATE_BOX))
             goto out;
           assert_int_equal (carom_world_body_count (sc.w), ++bodies);
+          /* the circle's rope went with it */
+          assert_int_equal (carom_world_joint_count (sc.w), 2);
+        }
+      if (step == 20)
+        {
+          if (!checked_call (&sc, REMOVE_JOINT))
+            goto out;
+          assert_int_equal (carom_world_joint_count (sc.w), 1);
         }
     }
   assert_int_equal (carom_world_body_count (sc.w), bodies);

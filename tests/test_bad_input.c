@@ -1492,6 +1492,160 @@ static void test_version_0_2_calls_refuse_bad_input (void **state)
   carom_world_destroy (w);
 }
 
+/* --------------------------------------------------------------- joints */
+
+typedef enum joint_fault {
+  JF_NONE, JF_SIZE, JF_TYPE, JF_SAME, JF_A_STALE, JF_B_STALE, JF_B_NULL, JF_BOTH_STATIC, JF_MOUSE_A, JF_X_NAN,
+  JF_Y_HUGE, JF_AXIS_ZERO, JF_AXIS_INF, JF_LIMIT_ORDER, JF_FORCE_NEG, JF_TORQUE_NEG, JF_HERTZ_NEG,
+  JF_DAMPING_NAN, JF_LENGTH_NEG, JF_ANCHORS_SAME, JF_SPEED_INF
+} joint_fault;
+
+typedef struct joint_case {
+  const char *what;
+  carom_joint_type type;
+  joint_fault fault;
+  carom_status want;
+} joint_case;
+
+static const joint_case joint_cases[] = {
+  { "a joint def of the wrong size", CAROM_JOINT_REVOLUTE, JF_SIZE, CAROM_ERR_BAD_STRUCT_SIZE },
+  { "an unknown joint type", CAROM_JOINT_REVOLUTE, JF_TYPE, CAROM_ERR_BAD_ARGUMENT },
+  { "a joint of a body to itself", CAROM_JOINT_WELD, JF_SAME, CAROM_ERR_BAD_ARGUMENT },
+  { "a stale body a", CAROM_JOINT_REVOLUTE, JF_A_STALE, CAROM_ERR_STALE_BODY },
+  { "a stale body b", CAROM_JOINT_DISTANCE, JF_B_STALE, CAROM_ERR_STALE_BODY },
+  { "no body b", CAROM_JOINT_REVOLUTE, JF_B_NULL, CAROM_ERR_STALE_BODY },
+  { "two static bodies", CAROM_JOINT_REVOLUTE, JF_BOTH_STATIC, CAROM_ERR_STATIC_BODY },
+  { "a mouse joint with a body a", CAROM_JOINT_MOUSE, JF_MOUSE_A, CAROM_ERR_BAD_ARGUMENT },
+  { "an anchor at x NaN", CAROM_JOINT_REVOLUTE, JF_X_NAN, CAROM_ERR_NOT_FINITE },
+  { "an anchor at y 2e100", CAROM_JOINT_WELD, JF_Y_HUGE, CAROM_ERR_BAD_ARGUMENT },
+  { "a prismatic joint without an axis", CAROM_JOINT_PRISMATIC, JF_AXIS_ZERO, CAROM_ERR_BAD_ARGUMENT },
+  { "a wheel joint without an axis", CAROM_JOINT_WHEEL, JF_AXIS_ZERO, CAROM_ERR_BAD_ARGUMENT },
+  { "an axis of inf", CAROM_JOINT_WHEEL, JF_AXIS_INF, CAROM_ERR_NOT_FINITE },
+  { "a limit with lower > upper", CAROM_JOINT_REVOLUTE, JF_LIMIT_ORDER, CAROM_ERR_BAD_ARGUMENT },
+  { "a negative motor force", CAROM_JOINT_PRISMATIC, JF_FORCE_NEG, CAROM_ERR_BAD_ARGUMENT },
+  { "a negative motor torque", CAROM_JOINT_MOTOR, JF_TORQUE_NEG, CAROM_ERR_BAD_ARGUMENT },
+  { "a negative hertz", CAROM_JOINT_DISTANCE, JF_HERTZ_NEG, CAROM_ERR_BAD_ARGUMENT },
+  { "a damping ratio of NaN", CAROM_JOINT_WELD, JF_DAMPING_NAN, CAROM_ERR_NOT_FINITE },
+  { "a negative length", CAROM_JOINT_DISTANCE, JF_LENGTH_NEG, CAROM_ERR_BAD_ARGUMENT },
+  { "a distance joint of coinciding anchors", CAROM_JOINT_DISTANCE, JF_ANCHORS_SAME, CAROM_ERR_BAD_ARGUMENT },
+  { "a motor speed of inf", CAROM_JOINT_REVOLUTE, JF_SPEED_INF, CAROM_ERR_NOT_FINITE },
+  { "a good revolute joint (control)", CAROM_JOINT_REVOLUTE, JF_NONE, CAROM_OK },
+};
+
+/* Every bad joint def is refused with its status and changes nothing; so
+ * are the joint calls on a stale id and their bad arguments. */
+static void test_joint_calls_refuse_bad_input (void **state)
+{
+  carom_world *w = new_world (-10.0);
+  carom_body_def d;
+  carom_body_id a, b, ground, stale;
+  carom_joint_id id, good, stale_joint;
+  carom_joint_def def;
+  carom_joint_type type = (carom_joint_type) 9;
+  double x = 7, y = 7, t = 7;
+  size_t k;
+  (void) state;
+  carom_body_def_init (&d, sizeof d);
+  d.type = CAROM_STATIC;
+  assert_status (carom_world_add_box (w, &d, 10.0, 1.0, &ground), CAROM_OK);
+  d.type = CAROM_DYNAMIC, d.y = 2.0;
+  assert_status (carom_world_add_circle (w, &d, 0.5, &a), CAROM_OK);
+  d.x = 2.0;
+  assert_status (carom_world_add_box (w, &d, 1.0, 0.5, &b), CAROM_OK);
+  assert_status (carom_world_add_circle (w, &d, 1.0, &stale), CAROM_OK);
+  assert_status (carom_world_remove_body (w, stale), CAROM_OK);
+  for (k = 0; k < sizeof joint_cases / sizeof joint_cases[0]; ++k)
+    {
+      const joint_case *c = &joint_cases[k];
+      uint64_t before = world_state_hash (w);
+      int32_t joints = carom_world_joint_count (w);
+      carom_status s;
+      assert_status (carom_joint_def_init (&def, sizeof def), CAROM_OK);
+      def.type = c->type, def.a = a, def.b = b, def.x = 1.0, def.y = 2.0, def.x2 = 2.0, def.y2 = 2.0;
+      def.axis_x = 1.0;
+      switch (c->fault)
+        {
+        case JF_NONE: break;
+        case JF_SIZE: def.size = sizeof def - 8; break;
+        case JF_TYPE: def.type = (carom_joint_type) 7; break;
+        case JF_SAME: def.a = b; break;
+        case JF_A_STALE: def.a = stale; break;
+        case JF_B_STALE: def.b = stale; break;
+        case JF_B_NULL: def.b = CAROM_NULL_BODY; break;
+        case JF_BOTH_STATIC: def.a = CAROM_NULL_BODY, def.b = ground; break;
+        case JF_MOUSE_A: break;
+        case JF_X_NAN: def.x = NAN; break;
+        case JF_Y_HUGE: def.y = 2e100; break;
+        case JF_AXIS_ZERO: def.axis_x = 0.0; break;
+        case JF_AXIS_INF: def.axis_y = INFINITY; break;
+        case JF_LIMIT_ORDER: def.enable_limit = 1, def.lower = 1.0, def.upper = -1.0; break;
+        case JF_FORCE_NEG: def.max_motor_force = -1.0; break;
+        case JF_TORQUE_NEG: def.max_motor_torque = -1.0; break;
+        case JF_HERTZ_NEG: def.hertz = -1.0; break;
+        case JF_DAMPING_NAN: def.damping_ratio = NAN; break;
+        case JF_LENGTH_NEG: def.length = -1.0; break;
+        case JF_ANCHORS_SAME: def.x2 = def.x, def.y2 = def.y; break;
+        case JF_SPEED_INF: def.motor_speed = INFINITY; break;
+        }
+      id = 12345;
+      s = carom_world_add_joint (w, &def, &id);
+      if (s != c->want)
+        fail_msg ("%s: returned %d (%s), wanted %d (%s)", c->what, (int) s, carom_status_string (s), (int) c->want,
+                  carom_status_string (c->want));
+      if (c->want != CAROM_OK && (world_state_hash (w) != before || id != 12345 || carom_world_joint_count (w) != joints))
+        fail_msg ("%s: refused, but the world or the id changed", c->what);
+    }
+  assert_status (carom_world_add_joint (w, NULL, &id), CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_world_add_joint (NULL, &def, &id), CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_joint_def_init (NULL, sizeof def), CAROM_ERR_NULL_ARGUMENT);
+  assert_status (carom_joint_def_init (&def, 3), CAROM_ERR_BAD_STRUCT_SIZE);
+  /* a live joint and a stale one */
+  assert_status (carom_joint_def_init (&def, sizeof def), CAROM_OK);
+  def.type = CAROM_JOINT_REVOLUTE, def.a = a, def.b = b, def.x = 1.0, def.y = 2.0;
+  assert_status (carom_world_add_joint (w, &def, &good), CAROM_OK);
+  assert_status (carom_world_add_joint (w, &def, &stale_joint), CAROM_OK);
+  assert_status (carom_world_remove_joint (w, stale_joint), CAROM_OK);
+  {
+    uint64_t before = world_state_hash (w);
+    assert_status (carom_world_remove_joint (w, stale_joint), CAROM_ERR_STALE_JOINT);
+    assert_status (carom_world_remove_joint (w, CAROM_NULL_JOINT), CAROM_ERR_STALE_JOINT);
+    assert_status (carom_world_remove_joint (w, ((uint64_t) 1 << 32) | 999u), CAROM_ERR_STALE_JOINT);
+    assert_status (carom_joint_check (w, stale_joint), CAROM_ERR_STALE_JOINT);
+    assert_status (carom_joint_get_bodies (w, stale_joint, &type, &a, &b), CAROM_ERR_STALE_JOINT);
+    assert_status (carom_joint_get_anchors (w, stale_joint, &x, &y, &x, &y), CAROM_ERR_STALE_JOINT);
+    assert_status (carom_joint_get_reaction (w, stale_joint, &x, &y, &t), CAROM_ERR_STALE_JOINT);
+    assert_true (type == (carom_joint_type) 9 && x == 7 && y == 7 && t == 7);
+    assert_status (carom_joint_set_motor (w, stale_joint, 1, 1.0, 1.0), CAROM_ERR_STALE_JOINT);
+    assert_status (carom_joint_set_target (w, stale_joint, 1.0, 1.0, 0.0), CAROM_ERR_STALE_JOINT);
+    /* bad values on a live joint */
+    assert_status (carom_joint_set_motor (w, good, 1, NAN, 1.0), CAROM_ERR_NOT_FINITE);
+    assert_status (carom_joint_set_motor (w, good, 1, 1.0, -1.0), CAROM_ERR_BAD_ARGUMENT);
+    assert_status (carom_joint_set_motor (w, good, 1, 2e100, 1.0), CAROM_ERR_BAD_ARGUMENT);
+    assert_status (carom_joint_set_target (w, good, 1.0, 1.0, 0.0), CAROM_ERR_BAD_ARGUMENT); /* not mouse or motor */
+    assert_status (carom_joint_check (NULL, good), CAROM_ERR_NULL_ARGUMENT);
+    assert_status (carom_world_remove_joint (NULL, good), CAROM_ERR_NULL_ARGUMENT);
+    assert_status (carom_joint_get_bodies (NULL, good, NULL, NULL, NULL), CAROM_ERR_NULL_ARGUMENT);
+    assert_status (carom_joint_get_anchors (NULL, good, NULL, NULL, NULL, NULL), CAROM_ERR_NULL_ARGUMENT);
+    assert_status (carom_joint_get_reaction (NULL, good, NULL, NULL, NULL), CAROM_ERR_NULL_ARGUMENT);
+    assert_status (carom_joint_set_motor (NULL, good, 1, 1.0, 1.0), CAROM_ERR_NULL_ARGUMENT);
+    assert_status (carom_joint_set_target (NULL, good, 1.0, 1.0, 0.0), CAROM_ERR_NULL_ARGUMENT);
+    assert_int_equal (carom_world_joint_count (NULL), 0);
+    assert_true (world_state_hash (w) == before);
+  }
+  /* a mouse joint's target: NaN and huge are refused */
+  assert_status (carom_joint_def_init (&def, sizeof def), CAROM_OK);
+  def.type = CAROM_JOINT_MOUSE, def.b = b, def.x = 2.0, def.y = 2.0;
+  assert_status (carom_world_add_joint (w, &def, &id), CAROM_OK);
+  {
+    uint64_t before = world_state_hash (w);
+    assert_status (carom_joint_set_target (w, id, NAN, 1.0, 0.0), CAROM_ERR_NOT_FINITE);
+    assert_status (carom_joint_set_target (w, id, 1.0, -2e100, 0.0), CAROM_ERR_BAD_ARGUMENT);
+    assert_status (carom_joint_set_motor (w, id, 1, 1.0, 1.0), CAROM_ERR_BAD_ARGUMENT); /* a mouse has no motor */
+    assert_true (world_state_hash (w) == before);
+  }
+  carom_world_destroy (w);
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
@@ -1523,6 +1677,7 @@ int main (void)
     cmocka_unit_test (test_scene_error_struct_and_empty_text),
     cmocka_unit_test (test_version_0_2_calls_refuse_bad_input),
     cmocka_unit_test (test_compound_calls_refuse_bad_input),
+    cmocka_unit_test (test_joint_calls_refuse_bad_input),
   };
   return cmocka_run_group_tests_name ("bad_input", tests, NULL, NULL);
 }

@@ -8,6 +8,12 @@
             world.step(1 / 60)
         print(ball.position, ball.velocity)
 
+    with carom.World(gravity=(0, -9.81)) as world:
+        bob = world.add_circle(0.1, x=1.0)
+        rod = world.add_joint("revolute", a=None, b=bob, x=0.0, y=0.0)  # pinned to the world
+        world.step(1 / 60)
+        print(rod.reaction, rod.anchors)
+
 Every failure of the C library raises CaromError, whose `status` is a
 Status and whose message comes from carom_status_string. The shared
 library is found through CAROM_LIBRARY (a full path), else the system's
@@ -34,6 +40,9 @@ __all__ = [
     "Contact",
     "Event",
     "EventType",
+    "Joint",
+    "JointType",
+    "Reaction",
     "RayHit",
     "draw",
     "NarrowPhase",
@@ -79,6 +88,7 @@ class Status(enum.IntEnum):
     STATIC_BODY = 16
     SCENE_SYNTAX = 17
     IO = 18
+    STALE_JOINT = 19  # version 0.2
 
 
 class EventType(enum.IntEnum):
@@ -88,6 +98,23 @@ class EventType(enum.IntEnum):
     CONTACT_END = 1
     SENSOR_BEGIN = 2
     SENSOR_END = 3
+
+
+class JointType(enum.IntEnum):
+    """carom_joint_type: what a joint holds (version 0.2)."""
+
+    REVOLUTE = 0   #: a shared point: b turns about the anchor
+    PRISMATIC = 1  #: b slides along an axis fixed in a, without turning
+    DISTANCE = 2   #: the two anchors keep their distance
+    WELD = 3       #: b is fixed to a
+    WHEEL = 4      #: b's anchor stays on an axis through a's (b turns freely)
+    MOTOR = 5      #: b is driven towards a pose relative to a
+    MOUSE = 6      #: a point of b is pulled towards a moving target
+
+
+#: A joint's constraint force (fx, fy) on body b, at b's anchor, and torque,
+#: averaged over the last step (Joint.reaction).
+Reaction = collections.namedtuple("Reaction", "fx fy torque")
 
 
 #: The first body a ray meets: the Body, the point and outward normal on
@@ -346,10 +373,12 @@ class World:
             return "<carom.World closed>"
         return "<carom.World with %d bodies>" % len(self)
 
-    def _handle(self, for_body=False):
+    def _handle(self, for_body=False, for_joint=False):
         if self._ptr is None:
             if for_body:
                 raise ClosedWorldError(Status.STALE_BODY, "the body's world was closed")
+            if for_joint:
+                raise ClosedWorldError(Status.STALE_JOINT, "the joint's world was closed")
             raise ClosedWorldError(Status.NULL_ARGUMENT, "the world was closed")
         return self._ptr
 
@@ -509,10 +538,14 @@ class World:
 
     # ----------------------------------------------------------- debug draw
     def debug_draw(self, polygon=None, circle=None, segment=None, point=None, bodies=True,
-                   contacts=True):
+                   contacts=True, joint=None, joints=True):
         """Call polygon(points, body), circle(center, radius, angle, body),
-        segment(p0, p1) and point(p) for every body and contact
-        (carom_world_draw); any may be None."""
+        joint(type, points, joint), segment(p0, p1) and point(p) for every
+        body, joint and contact (carom_world_draw: the bodies, then the
+        joints, then the contacts); any may be None. A joint's points are
+        four (x, y): the centre of body a, the anchor on a, the anchor on b,
+        the centre of body b (for a joint to the world the first two are its
+        fixed point; for a mouse joint, its target)."""
         d = _native.DebugDraw()
         _check(_lib.carom_debug_draw_init(ctypes.byref(d), ctypes.sizeof(d)), "debug_draw")
         errors = []
@@ -538,8 +571,13 @@ class World:
                 lambda x0, y0, x1, y1, u: segment((x0, y0), (x1, y1))))
         if point is not None:
             d.point = _native.DRAW_POINT_FN(guard(lambda x, y, u: point((x, y))))
+        if joint is not None:
+            d.joint = _native.DRAW_JOINT_FN(guard(
+                lambda t, xy, j, u: joint(_joint_type(t), [(xy[2 * k], xy[2 * k + 1])
+                                                           for k in range(4)], Joint(self, j))))
         d.draw_bodies = 1 if bodies else 0
         d.draw_contacts = 1 if contacts else 0
+        d.draw_joints = 1 if joints else 0
         _check(_lib.carom_world_draw(self._handle(), ctypes.byref(d)), "debug_draw")
         if errors:
             raise errors[0]
@@ -634,6 +672,210 @@ class World:
         count = min(len(pts), 2**31 - 1)
         return self._add("add_polygon",
                          lambda h, d, i: _lib.carom_world_add_polygon(h, d, xy, count, i), options)
+
+    # --------------------------------------------------------------- joints
+    def add_joint(self, type, a=None, b=None, x=0.0, y=0.0, x2=0.0, y2=0.0, axis=None,
+                  limit=None, motor=None, spring=None, collide_connected=False, length=None,
+                  max_motor_force=None, max_motor_torque=None):
+        """A joint between bodies a and b (carom_world_add_joint), returned
+        as a Joint. `type` is a JointType or its name ('revolute',
+        'prismatic', 'distance', 'weld', 'wheel', 'motor', 'mouse'). a may be
+        None for the world itself (a fixed point; a mouse joint's a must be
+        None); b must be a Body, and one of the two dynamic. (x, y) is the
+        anchor in world coordinates at creation (distance: the anchor on a,
+        and (x2, y2) the one on b; mouse: the point of b grabbed and the
+        first target). axis (ax, ay): prismatic and wheel joints' axis in
+        world coordinates, any non-zero length (required for them).
+        limit=(lower, upper), motor=(speed, max_force) and
+        spring=(hertz, damping_ratio) switch those on (None: off); what
+        each means depends on the type (docs/bindings.md, carom.h).
+        collide_connected: a and b still collide. length: a distance
+        joint's rest length (None: the anchors' distance at creation).
+        max_motor_force and max_motor_torque: a motor joint's bounds (a
+        mouse joint's force bound, None: unbounded), without turning a
+        motor on. Bad input raises CaromError and adds nothing."""
+        kind = _joint_type_of(type)
+        bodies = []
+        for name, body, optional in (("a", a, True), ("b", b, False)):
+            if body is None and optional:
+                bodies.append(0)
+                continue
+            if not isinstance(body, Body):
+                raise TypeError("%s must be a Body%s, got %r"
+                                % (name, " or None (the world)" if optional else "", body))
+            if body._world is not self:
+                raise ValueError("%s is a body of another world" % name)
+            bodies.append(body._id)
+        if motor is not None and max_motor_force is not None:
+            raise ValueError("give motor=(speed, max_force) or max_motor_force, not both")
+        h = self._handle()
+        d = _native.new_def(_native.JointDef)
+        d.type = kind
+        d.a, d.b = bodies
+        d.x, d.y = _finite(x, "x"), _finite(y, "y")
+        d.x2, d.y2 = _finite(x2, "x2"), _finite(y2, "y2")
+        if axis is not None:
+            d.axis_x, d.axis_y = _pair(axis, "axis")
+        if limit is not None:
+            d.enable_limit = 1
+            d.lower, d.upper = _pair(limit, "limit")
+        if motor is not None:
+            d.enable_motor = 1
+            d.motor_speed, d.max_motor_force = _pair(motor, "motor")
+        elif max_motor_force is not None:
+            d.max_motor_force = _finite(max_motor_force, "max_motor_force")
+        if spring is not None:
+            d.enable_spring = 1
+            d.hertz, d.damping_ratio = _pair(spring, "spring")
+        d.collide_connected = 1 if collide_connected else 0
+        d.length = 0.0 if length is None else _finite(length, "length")
+        if max_motor_torque is not None:
+            d.max_motor_torque = _finite(max_motor_torque, "max_motor_torque")
+        new = _native.c_joint_id()
+        _check(_lib.carom_world_add_joint(h, ctypes.byref(d), ctypes.byref(new)), "add_joint")
+        return Joint(self, new.value)
+
+    @property
+    def joint_count(self):
+        """How many live joints the world holds."""
+        return _lib.carom_world_joint_count(self._handle())
+
+
+def _joint_type_of(value):
+    """A joint type for the C def: a JointType, its name, or an int (which
+    the library checks: an unknown one is Status.BAD_ARGUMENT)."""
+    if isinstance(value, str):
+        try:
+            return int(JointType[value.upper()])
+        except KeyError:
+            raise ValueError("type must be one of %s, got %r"
+                             % (", ".join(repr(t.name.lower()) for t in JointType), value)) from None
+    return _int32(int(value) if isinstance(value, enum.IntEnum) else value, "type")
+
+
+def _joint_type(value):
+    """A JointType for a known code, the plain int for one a newer library added."""
+    try:
+        return JointType(value)
+    except ValueError:
+        return int(value)
+
+
+class Joint:
+    """A handle to one joint of a World (version 0.2): its id and its
+    world. The handle of a removed joint (removing one of its bodies
+    removes it too) raises CaromError(Status.STALE_JOINT); one whose world
+    was closed raises ClosedWorldError."""
+
+    __slots__ = ("_world", "_id", "__weakref__")
+
+    def __init__(self, world, joint_id):
+        self._world = world
+        self._id = int(joint_id)
+
+    @property
+    def id(self):
+        """The carom_joint_id (a non-zero 64-bit integer)."""
+        return self._id
+
+    @property
+    def world(self):
+        return self._world
+
+    def __eq__(self, other):
+        return isinstance(other, Joint) and other._world is self._world and other._id == self._id
+
+    def __hash__(self):
+        return hash((id(self._world), self._id, "joint"))
+
+    @property
+    def index(self):
+        """The id's slot (1-based) and generation: what the id is made of."""
+        return (self._id & 0xFFFFFFFF, self._id >> 32)
+
+    def __repr__(self):
+        if not self.is_alive:
+            return "<carom.Joint %d.%d (gone)>" % self.index
+        kind = self.type
+        a, b = self.bodies
+        return "<carom.Joint %d.%d %s: %s and body %d.%d>" % (
+            self.index + (kind.name.lower() if isinstance(kind, JointType) else kind,
+                          "the world" if a is None else "body %d.%d" % a.index) + b.index)
+
+    def _h(self):
+        return self._world._handle(for_joint=True)
+
+    @property
+    def is_alive(self):
+        """True while the joint exists (False once removed, with one of its
+        bodies or on its own, or its world closed)."""
+        h = self._world._ptr
+        return h is not None and _lib.carom_joint_check(h, self._id) == 0
+
+    def remove(self):
+        """Remove the joint from its world; the handle becomes stale."""
+        _check(_lib.carom_world_remove_joint(self._h(), self._id), "remove")
+
+    def _bodies(self):
+        kind, a, b = ctypes.c_int(), _native.c_body_id(), _native.c_body_id()
+        _check(_lib.carom_joint_get_bodies(self._h(), self._id, ctypes.byref(kind), ctypes.byref(a),
+                                           ctypes.byref(b)), "joint bodies")
+        return kind.value, a.value, b.value
+
+    @property
+    def type(self):
+        """The JointType."""
+        return _joint_type(self._bodies()[0])
+
+    @property
+    def bodies(self):
+        """(a, b): the two Bodies, a None for a joint to the world."""
+        _, a, b = self._bodies()
+        return (None if a == 0 else Body(self._world, a), Body(self._world, b))
+
+    @property
+    def a(self):
+        return self.bodies[0]
+
+    @property
+    def b(self):
+        return self.bodies[1]
+
+    @property
+    def anchors(self):
+        """((ax, ay), (bx, by)): the anchors on a and on b now, in world
+        coordinates (mouse joint: b's grabbed point, then the target)."""
+        v = [ctypes.c_double() for _ in range(4)]
+        _check(_lib.carom_joint_get_anchors(self._h(), self._id, *(ctypes.byref(x) for x in v)),
+               "anchors")
+        return ((v[0].value, v[1].value), (v[2].value, v[3].value))
+
+    @property
+    def reaction(self):
+        """Reaction(fx, fy, torque): the constraint force on body b (at its
+        anchor) and torque, averaged over the last step; zero before the
+        first step."""
+        v = [ctypes.c_double() for _ in range(3)]
+        _check(_lib.carom_joint_get_reaction(self._h(), self._id, *(ctypes.byref(x) for x in v)),
+               "reaction")
+        return Reaction(v[0].value, v[1].value, v[2].value)
+
+    def set_motor(self, speed=0.0, max_force=0.0, enabled=True):
+        """Turn the motor on (or off: enabled=False) with its speed and its
+        most force (a torque for revolute and wheel joints); wakes the
+        bodies. Motor, mouse and weld joints have no such motor
+        (Status.BAD_ARGUMENT)."""
+        _check(_lib.carom_joint_set_motor(self._h(), self._id, 1 if enabled else 0,
+                                          _finite(speed, "speed"), _finite(max_force, "max_force")),
+               "set_motor")
+
+    def set_target(self, x, y, angle=0.0):
+        """Move the target; wakes the bodies. Mouse joint: the world point
+        b's grabbed point is pulled to (angle ignored). Motor joint: the
+        pose b is driven to, b's centre in a's frame and b's angle less
+        a's. Other types: Status.BAD_ARGUMENT."""
+        _check(_lib.carom_joint_set_target(self._h(), self._id, _finite(x, "x"), _finite(y, "y"),
+                                           _finite(angle, "angle")), "set_target")
 
 
 class Body:
@@ -915,10 +1157,12 @@ class Body:
 
 
 
-def draw(world, ax, contacts=True, **style):
+def draw(world, ax, contacts=True, joints=True, **style):
     """Draw a world on a matplotlib Axes (or anything with fill and plot):
-    polygons and circles filled, a circle's radius marker, and the contact
-    points and normals. Extra keyword arguments go to ax.fill."""
+    polygons and circles filled, a circle's radius marker, the joints (a
+    line from body a's centre through the two anchors to body b's, the
+    anchors marked), and the contact points and normals. Extra keyword
+    arguments go to ax.fill."""
     import math
     style.setdefault("alpha", 0.6)
     style.setdefault("edgecolor", "black")
@@ -939,4 +1183,9 @@ def draw(world, ax, contacts=True, **style):
     def point(p):
         ax.plot([p[0]], [p[1]], marker="o", markersize=2, color="red")
 
-    world.debug_draw(polygon, circle, segment, point, contacts=contacts)
+    def joint(kind, points, joint):
+        ax.plot([p[0] for p in points], [p[1] for p in points], color="blue", linewidth=0.8)
+        ax.plot([points[1][0], points[2][0]], [points[1][1], points[2][1]], linestyle="none",
+                marker="o", markersize=3, color="blue")
+
+    world.debug_draw(polygon, circle, segment, point, contacts=contacts, joint=joint, joints=joints)

@@ -27,6 +27,8 @@ c_world_p = ctypes.c_void_p  # carom_world * (opaque)
 c_double_p = ctypes.POINTER(ctypes.c_double)
 c_int32_p = ctypes.POINTER(ctypes.c_int32)
 c_body_id_p = ctypes.POINTER(c_body_id)
+c_joint_id = ctypes.c_uint64  # carom_joint_id (version 0.2)
+c_joint_id_p = ctypes.POINTER(c_joint_id)
 
 ALLOC_FN = ctypes.CFUNCTYPE(ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p)
 FREE_FN = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p)
@@ -131,6 +133,35 @@ class ContactEvent(ctypes.Structure):
     ]
 
 
+class JointDef(ctypes.Structure):
+    """carom_joint_def (version 0.2): carom_joint_def_init fills it with zeros."""
+
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("type", ctypes.c_int),
+        ("a", ctypes.c_uint64),
+        ("b", ctypes.c_uint64),
+        ("x", ctypes.c_double),
+        ("y", ctypes.c_double),
+        ("x2", ctypes.c_double),
+        ("y2", ctypes.c_double),
+        ("axis_x", ctypes.c_double),
+        ("axis_y", ctypes.c_double),
+        ("enable_limit", ctypes.c_int32),
+        ("lower", ctypes.c_double),
+        ("upper", ctypes.c_double),
+        ("enable_motor", ctypes.c_int32),
+        ("motor_speed", ctypes.c_double),
+        ("max_motor_force", ctypes.c_double),
+        ("enable_spring", ctypes.c_int32),
+        ("hertz", ctypes.c_double),
+        ("damping_ratio", ctypes.c_double),
+        ("collide_connected", ctypes.c_int32),
+        ("length", ctypes.c_double),
+        ("max_motor_torque", ctypes.c_double),
+    ]
+
+
 DRAW_POLYGON_FN = ctypes.CFUNCTYPE(None, ctypes.POINTER(ctypes.c_double), ctypes.c_int32,
                                    ctypes.c_uint64, ctypes.c_void_p)
 DRAW_CIRCLE_FN = ctypes.CFUNCTYPE(None, ctypes.c_double, ctypes.c_double, ctypes.c_double,
@@ -138,10 +169,12 @@ DRAW_CIRCLE_FN = ctypes.CFUNCTYPE(None, ctypes.c_double, ctypes.c_double, ctypes
 DRAW_SEGMENT_FN = ctypes.CFUNCTYPE(None, ctypes.c_double, ctypes.c_double, ctypes.c_double,
                                    ctypes.c_double, ctypes.c_void_p)
 DRAW_POINT_FN = ctypes.CFUNCTYPE(None, ctypes.c_double, ctypes.c_double, ctypes.c_void_p)
+DRAW_JOINT_FN = ctypes.CFUNCTYPE(None, ctypes.c_int, ctypes.POINTER(ctypes.c_double),
+                                 ctypes.c_uint64, ctypes.c_void_p)
 
 
 class DebugDraw(ctypes.Structure):
-    """carom_debug_draw (version 0.2)."""
+    """carom_debug_draw (version 0.2, with the joints' fields)."""
 
     _fields_ = [
         ("size", ctypes.c_uint32),
@@ -152,6 +185,8 @@ class DebugDraw(ctypes.Structure):
         ("user", ctypes.c_void_p),
         ("draw_bodies", ctypes.c_int32),
         ("draw_contacts", ctypes.c_int32),
+        ("joint", DRAW_JOINT_FN),  # version 0.2, joints
+        ("draw_joints", ctypes.c_int32),
     ]
 
 
@@ -171,6 +206,8 @@ DYNAMIC, STATIC, KINEMATIC = 0, 1, 2
 EVENT_CONTACT_BEGIN, EVENT_CONTACT_END, EVENT_SENSOR_BEGIN, EVENT_SENSOR_END = 0, 1, 2, 3
 SHAPE_CIRCLE, SHAPE_POLYGON, SHAPE_COMPOUND = 0, 1, 2
 NARROW_SAT, NARROW_VERTEX_EDGE = 0, 1
+(JOINT_REVOLUTE, JOINT_PRISMATIC, JOINT_DISTANCE, JOINT_WELD, JOINT_WHEEL, JOINT_MOTOR,
+ JOINT_MOUSE) = range(7)
 MAX_POLYGON_VERTICES = 1024
 MAX_COMPOUND_SHAPES = 256
 
@@ -180,6 +217,7 @@ MAX_COMPOUND_SHAPES = 256
 _W = c_world_p
 _D = ctypes.c_double
 _ID = c_body_id
+_JID = c_joint_id
 
 # name: (restype, argtypes). Every function of include/carom.h is here.
 PROTOTYPES = {
@@ -265,6 +303,18 @@ PROTOTYPES = {
         ctypes.c_int32, [_W, _D, _D, ctypes.c_uint32, c_body_id_p, ctypes.c_int32]),
     "carom_world_get_events": (
         ctypes.c_int32, [_W, ctypes.POINTER(ContactEvent), ctypes.c_int32]),
+    "carom_joint_def_init": (c_status, [ctypes.c_void_p, ctypes.c_uint32]),
+    "carom_world_add_joint": (c_status, [_W, ctypes.POINTER(JointDef), c_joint_id_p]),
+    "carom_world_remove_joint": (c_status, [_W, _JID]),
+    "carom_joint_check": (c_status, [_W, _JID]),
+    "carom_world_joint_count": (ctypes.c_int32, [_W]),
+    "carom_joint_get_bodies": (
+        c_status, [_W, _JID, ctypes.POINTER(ctypes.c_int), c_body_id_p, c_body_id_p]),
+    "carom_joint_get_anchors": (
+        c_status, [_W, _JID, c_double_p, c_double_p, c_double_p, c_double_p]),
+    "carom_joint_get_reaction": (c_status, [_W, _JID, c_double_p, c_double_p, c_double_p]),
+    "carom_joint_set_motor": (c_status, [_W, _JID, ctypes.c_int32, _D, _D]),
+    "carom_joint_set_target": (c_status, [_W, _JID, _D, _D, _D]),
     "carom_debug_draw_init": (c_status, [ctypes.c_void_p, ctypes.c_uint32]),
     "carom_world_draw": (c_status, [_W, ctypes.POINTER(DebugDraw)]),
     "carom_scene_load_text": (
@@ -368,7 +418,8 @@ def new_def(cls):
     knows it: the binding passes its own size (the ABI rule), and a library
     older than the binding, which cannot fill that much, refuses it."""
     init = {WorldDef: lib.carom_world_def_init, BodyDef: lib.carom_body_def_init,
-            ShapeDef: lib.carom_shape_def_init}[cls]
+            ShapeDef: lib.carom_shape_def_init, JointDef: lib.carom_joint_def_init,
+            DebugDraw: lib.carom_debug_draw_init}[cls]
     d = cls()
     status = init(ctypes.byref(d), ctypes.sizeof(cls))
     if status != 0:
@@ -383,3 +434,5 @@ def new_def(cls):
 new_def(WorldDef)
 new_def(BodyDef)
 new_def(ShapeDef)
+new_def(JointDef)
+new_def(DebugDraw)

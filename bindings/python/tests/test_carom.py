@@ -47,6 +47,9 @@ def test_library_major_version_matches():
 @pytest.mark.parametrize("init, cls", [
     (_native.lib.carom_world_def_init, _native.WorldDef),
     (_native.lib.carom_body_def_init, _native.BodyDef),
+    (_native.lib.carom_shape_def_init, _native.ShapeDef),
+    (_native.lib.carom_joint_def_init, _native.JointDef),
+    (_native.lib.carom_debug_draw_init, _native.DebugDraw),
 ])
 def test_struct_layouts_match_the_library(init, cls):
     # The library accepts exactly the sizes it knows: our layout's size must

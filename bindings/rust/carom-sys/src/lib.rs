@@ -8,9 +8,11 @@
 //! does not know, which a Rust `enum` could not hold.
 //!
 //! The structs with a leading `size` field ([`carom_world_def`],
-//! [`carom_body_def`], [`carom_scene_error`]) must be given the size this
-//! crate knows: [`safe::world_def`] and [`safe::body_def`] return them filled
-//! with the library's defaults and the right size.
+//! [`carom_body_def`], [`carom_shape_def`], [`carom_joint_def`],
+//! [`carom_debug_draw`], [`carom_scene_error`]) must be given the size this
+//! crate knows: [`safe::world_def`], [`safe::body_def`] and
+//! [`safe::joint_def`] return them filled with the library's defaults and
+//! the right size.
 //!
 //! ```
 //! use carom_sys::safe::{self, World};
@@ -64,6 +66,8 @@ pub const CAROM_ERR_TOO_MANY_BODIES: carom_status = 15;
 pub const CAROM_ERR_STATIC_BODY: carom_status = 16;
 pub const CAROM_ERR_SCENE_SYNTAX: carom_status = 17;
 pub const CAROM_ERR_IO: carom_status = 18;
+/// Version 0.2: a joint id is unknown or was removed.
+pub const CAROM_ERR_STALE_JOINT: carom_status = 19;
 
 // ------------------------------------------------------------------- limits
 
@@ -105,12 +109,36 @@ pub const CAROM_EFFECT_FIXED_ROTATION: carom_effect = 1 << 4;
 pub const CAROM_EFFECT_DAMPING: carom_effect = 1 << 5;
 pub const CAROM_EFFECT_SLEEPING: carom_effect = 1 << 6;
 pub const CAROM_EFFECT_CONTINUOUS: carom_effect = 1 << 7;
+/// Version 0.2: the world has a joint.
+pub const CAROM_EFFECT_JOINTS: carom_effect = 1 << 8;
 
 pub type carom_shape_kind = c_int;
 pub const CAROM_SHAPE_CIRCLE: carom_shape_kind = 0;
 pub const CAROM_SHAPE_POLYGON: carom_shape_kind = 1;
 /// Version 0.2: a body of several shapes.
 pub const CAROM_SHAPE_COMPOUND: carom_shape_kind = 2;
+
+/// Version 0.2: a joint's id (slot index and generation); 0 is never valid.
+pub type carom_joint_id = u64;
+pub const CAROM_NULL_JOINT: carom_joint_id = 0;
+
+/// Version 0.2: what a joint holds (`include/carom.h` says what each
+/// type's limit, motor and spring act on).
+pub type carom_joint_type = c_int;
+/// A shared point: b turns about the anchor on a.
+pub const CAROM_JOINT_REVOLUTE: carom_joint_type = 0;
+/// b slides along the axis fixed in a, without turning relative to a.
+pub const CAROM_JOINT_PRISMATIC: carom_joint_type = 1;
+/// The anchors keep their distance (`length`, or their distance at creation).
+pub const CAROM_JOINT_DISTANCE: carom_joint_type = 2;
+/// b is fixed to a.
+pub const CAROM_JOINT_WELD: carom_joint_type = 3;
+/// The anchor on b stays on the axis through the anchor on a; b turns freely.
+pub const CAROM_JOINT_WHEEL: carom_joint_type = 4;
+/// b is driven towards a pose relative to a, with bounded force and torque.
+pub const CAROM_JOINT_MOTOR: carom_joint_type = 5;
+/// A point of b is pulled towards a moving target; a must be the world.
+pub const CAROM_JOINT_MOUSE: carom_joint_type = 6;
 
 /// The opaque world.
 #[repr(C)]
@@ -211,6 +239,35 @@ pub struct carom_contact_event {
     pub normal_impulse: f64,
 }
 
+/// Version 0.2: a joint's settings. `carom_joint_def_init` fills it with
+/// zeros ([`safe::joint_def`]); the fields a type does not use are ignored.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct carom_joint_def {
+    pub size: u32,
+    pub type_: carom_joint_type,
+    pub a: carom_body_id,
+    pub b: carom_body_id,
+    pub x: f64,
+    pub y: f64,
+    pub x2: f64,
+    pub y2: f64,
+    pub axis_x: f64,
+    pub axis_y: f64,
+    pub enable_limit: i32,
+    pub lower: f64,
+    pub upper: f64,
+    pub enable_motor: i32,
+    pub motor_speed: f64,
+    pub max_motor_force: f64,
+    pub enable_spring: i32,
+    pub hertz: f64,
+    pub damping_ratio: f64,
+    pub collide_connected: i32,
+    pub length: f64,
+    pub max_motor_torque: f64,
+}
+
 /// Version 0.2: the debug draw's callbacks.
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
@@ -224,6 +281,9 @@ pub struct carom_debug_draw {
     pub user: *mut c_void,
     pub draw_bodies: i32,
     pub draw_contacts: i32,
+    // version 0.2, joints
+    pub joint: Option<unsafe extern "C" fn(type_: carom_joint_type, xy: *const f64, id: carom_joint_id, user: *mut c_void)>,
+    pub draw_joints: i32,
 }
 
 #[repr(C)]
@@ -438,6 +498,35 @@ extern "C" {
     pub fn carom_world_query_aabb(world: *const carom_world, x0: f64, y0: f64, x1: f64, y1: f64, mask: u32, ids: *mut carom_body_id, capacity: i32) -> i32;
     pub fn carom_world_query_point(world: *const carom_world, x: f64, y: f64, mask: u32, ids: *mut carom_body_id, capacity: i32) -> i32;
     pub fn carom_world_get_events(world: *const carom_world, events: *mut carom_contact_event, capacity: i32) -> i32;
+    pub fn carom_joint_def_init(def: *mut carom_joint_def, size: u32) -> carom_status;
+    pub fn carom_world_add_joint(world: *mut carom_world, def: *const carom_joint_def, id: *mut carom_joint_id) -> carom_status;
+    pub fn carom_world_remove_joint(world: *mut carom_world, id: carom_joint_id) -> carom_status;
+    pub fn carom_joint_check(world: *const carom_world, id: carom_joint_id) -> carom_status;
+    pub fn carom_world_joint_count(world: *const carom_world) -> i32;
+    pub fn carom_joint_get_bodies(
+        world: *const carom_world,
+        id: carom_joint_id,
+        type_: *mut carom_joint_type,
+        a: *mut carom_body_id,
+        b: *mut carom_body_id,
+    ) -> carom_status;
+    pub fn carom_joint_get_anchors(
+        world: *const carom_world,
+        id: carom_joint_id,
+        ax: *mut f64,
+        ay: *mut f64,
+        bx: *mut f64,
+        by: *mut f64,
+    ) -> carom_status;
+    pub fn carom_joint_get_reaction(
+        world: *const carom_world,
+        id: carom_joint_id,
+        fx: *mut f64,
+        fy: *mut f64,
+        torque: *mut f64,
+    ) -> carom_status;
+    pub fn carom_joint_set_motor(world: *mut carom_world, id: carom_joint_id, enable: i32, speed: f64, max_force: f64) -> carom_status;
+    pub fn carom_joint_set_target(world: *mut carom_world, id: carom_joint_id, x: f64, y: f64, angle: f64) -> carom_status;
     pub fn carom_debug_draw_init(draw: *mut carom_debug_draw, size: u32) -> carom_status;
     pub fn carom_world_draw(world: *const carom_world, draw: *const carom_debug_draw) -> carom_status;
 

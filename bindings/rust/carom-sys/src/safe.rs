@@ -1,7 +1,8 @@
 //! A small safe layer: [`World`] owns a `carom_world` and destroys it when
-//! dropped; bodies are plain [`carom_body_id`]s, which the library checks on
-//! every call (a removed body's id gives `CAROM_ERR_STALE_BODY`, never a
-//! dangling pointer).
+//! dropped; bodies are plain [`carom_body_id`]s and joints plain
+//! [`carom_joint_id`]s, which the library checks on every call (a removed
+//! body's id gives `CAROM_ERR_STALE_BODY`, a removed joint's
+//! `CAROM_ERR_STALE_JOINT`, never a dangling pointer).
 
 use super::*;
 use std::ffi::{CStr, CString};
@@ -84,6 +85,213 @@ pub fn world_def() -> carom_world_def {
 /// Body settings with the library's defaults (`carom_body_def_init`).
 pub fn body_def() -> carom_body_def {
     defaults(carom_body_def_init).0
+}
+
+/// Joint settings as `carom_joint_def_init` gives them: all zeros, with
+/// this crate's size. [`JointDef`] is the safe way to fill them.
+pub fn joint_def() -> carom_joint_def {
+    defaults(carom_joint_def_init).0
+}
+
+/// The statuses the library gives for this crate's carom_joint_def and
+/// carom_debug_draw sizes: CAROM_OK when the declarations match a size
+/// the library knows (version 0.2).
+pub fn library_accepts_joint_sizes() -> (carom_status, carom_status) {
+    (
+        defaults(carom_joint_def_init).1,
+        defaults(carom_debug_draw_init).1,
+    )
+}
+
+/// A joint between bodies `a` and `b` ([`World::add_joint`]), version 0.2.
+/// `a` may be [`CAROM_NULL_BODY`] for the world itself (a fixed point; a
+/// mouse joint's must be); `b` must be a body, and one of the two dynamic.
+/// `anchor` is in world coordinates at creation (distance: the anchor on a,
+/// `anchor_b` the one on b; mouse: the point of b grabbed and the first
+/// target); `axis` is a prismatic or wheel joint's (any non-zero length).
+/// `limit` (lower, upper), `motor` (speed, max force: a torque for
+/// revolute and wheel joints) and `spring` (hertz, damping ratio) are off
+/// when `None`; what each acts on depends on the type (`include/carom.h`).
+/// `length` 0 is the anchors' distance at creation; `max_force` and
+/// `max_torque` bound a motor joint (and `max_force` a mouse joint, 0
+/// unbounded) without turning a motor on.
+///
+/// ```
+/// use carom_sys::safe::{self, JointDef, World};
+/// let mut def = safe::world_def();
+/// def.gravity_y = -9.81;
+/// let mut world = World::with_def(&def)?;
+/// let mut bob = safe::body_def();
+/// bob.x = 1.0;
+/// let bob = world.add_circle(&bob, 0.05)?;
+/// let pivot = world.add_joint(&JointDef::revolute(carom_sys::CAROM_NULL_BODY, bob, (0.0, 0.0)))?;
+/// for _ in 0..60 {
+///     world.step(1.0 / 60.0)?;
+/// }
+/// let (x, y) = world.position(bob)?;
+/// assert!(((x * x + y * y).sqrt() - 1.0).abs() < 1e-6);
+/// let (_fx, _fy, _torque) = world.joint_reaction(pivot)?;
+/// # Ok::<(), safe::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JointDef {
+    pub type_: carom_joint_type,
+    pub a: carom_body_id,
+    pub b: carom_body_id,
+    pub anchor: (f64, f64),
+    pub anchor_b: (f64, f64),
+    pub axis: (f64, f64),
+    pub limit: Option<(f64, f64)>,
+    pub motor: Option<(f64, f64)>,
+    pub spring: Option<(f64, f64)>,
+    pub collide_connected: bool,
+    pub length: f64,
+    pub max_force: f64,
+    pub max_torque: f64,
+}
+
+impl Default for JointDef {
+    /// A revolute joint at (0, 0) between no bodies: set `b` at least.
+    fn default() -> JointDef {
+        JointDef::new(CAROM_JOINT_REVOLUTE, CAROM_NULL_BODY, CAROM_NULL_BODY)
+    }
+}
+
+impl JointDef {
+    /// A joint of any type (an unknown one is refused by the library with
+    /// `CAROM_ERR_BAD_ARGUMENT`), every field else zero or off.
+    pub fn new(type_: carom_joint_type, a: carom_body_id, b: carom_body_id) -> JointDef {
+        JointDef {
+            type_,
+            a,
+            b,
+            anchor: (0.0, 0.0),
+            anchor_b: (0.0, 0.0),
+            axis: (0.0, 0.0),
+            limit: None,
+            motor: None,
+            spring: None,
+            collide_connected: false,
+            length: 0.0,
+            max_force: 0.0,
+            max_torque: 0.0,
+        }
+    }
+
+    /// b turns about `anchor`, shared with a.
+    pub fn revolute(a: carom_body_id, b: carom_body_id, anchor: (f64, f64)) -> JointDef {
+        JointDef::new(CAROM_JOINT_REVOLUTE, a, b).anchor(anchor)
+    }
+
+    /// b slides along `axis` (fixed in a) through `anchor`, without turning.
+    pub fn prismatic(a: carom_body_id, b: carom_body_id, anchor: (f64, f64), axis: (f64, f64)) -> JointDef {
+        JointDef::new(CAROM_JOINT_PRISMATIC, a, b).anchor(anchor).axis(axis)
+    }
+
+    /// `anchor_a` on a and `anchor_b` on b keep their distance.
+    pub fn distance(a: carom_body_id, b: carom_body_id, anchor_a: (f64, f64), anchor_b: (f64, f64)) -> JointDef {
+        JointDef {
+            anchor_b,
+            ..JointDef::new(CAROM_JOINT_DISTANCE, a, b).anchor(anchor_a)
+        }
+    }
+
+    /// b is fixed to a (softly with a spring).
+    pub fn weld(a: carom_body_id, b: carom_body_id, anchor: (f64, f64)) -> JointDef {
+        JointDef::new(CAROM_JOINT_WELD, a, b).anchor(anchor)
+    }
+
+    /// b's `anchor` stays on `axis` through a's; b turns freely.
+    pub fn wheel(a: carom_body_id, b: carom_body_id, anchor: (f64, f64), axis: (f64, f64)) -> JointDef {
+        JointDef::new(CAROM_JOINT_WHEEL, a, b).anchor(anchor).axis(axis)
+    }
+
+    /// The point `grab` of b is pulled towards a target
+    /// ([`World::set_joint_target`]), first `grab` itself.
+    pub fn mouse(b: carom_body_id, grab: (f64, f64)) -> JointDef {
+        JointDef::new(CAROM_JOINT_MOUSE, CAROM_NULL_BODY, b).anchor(grab)
+    }
+
+    pub fn anchor(mut self, anchor: (f64, f64)) -> JointDef {
+        self.anchor = anchor;
+        self
+    }
+
+    pub fn axis(mut self, axis: (f64, f64)) -> JointDef {
+        self.axis = axis;
+        self
+    }
+
+    pub fn limit(mut self, lower: f64, upper: f64) -> JointDef {
+        self.limit = Some((lower, upper));
+        self
+    }
+
+    pub fn motor(mut self, speed: f64, max_force: f64) -> JointDef {
+        self.motor = Some((speed, max_force));
+        self
+    }
+
+    pub fn spring(mut self, hertz: f64, damping_ratio: f64) -> JointDef {
+        self.spring = Some((hertz, damping_ratio));
+        self
+    }
+
+    pub fn collide_connected(mut self, collide: bool) -> JointDef {
+        self.collide_connected = collide;
+        self
+    }
+
+    pub fn length(mut self, length: f64) -> JointDef {
+        self.length = length;
+        self
+    }
+
+    pub fn max_force(mut self, max_force: f64) -> JointDef {
+        self.max_force = max_force;
+        self
+    }
+
+    pub fn max_torque(mut self, max_torque: f64) -> JointDef {
+        self.max_torque = max_torque;
+        self
+    }
+
+    /// The C def, with this crate's size (`motor`'s force, when set, is
+    /// the def's `max_motor_force`; else `max_force`).
+    pub fn to_raw(&self) -> carom_joint_def {
+        let mut d = joint_def();
+        d.size = size_of::<carom_joint_def>() as u32;
+        d.type_ = self.type_;
+        d.a = self.a;
+        d.b = self.b;
+        d.x = self.anchor.0;
+        d.y = self.anchor.1;
+        d.x2 = self.anchor_b.0;
+        d.y2 = self.anchor_b.1;
+        d.axis_x = self.axis.0;
+        d.axis_y = self.axis.1;
+        if let Some((lower, upper)) = self.limit {
+            d.enable_limit = 1;
+            d.lower = lower;
+            d.upper = upper;
+        }
+        d.max_motor_force = self.max_force;
+        if let Some((speed, max_force)) = self.motor {
+            d.enable_motor = 1;
+            d.motor_speed = speed;
+            d.max_motor_force = max_force;
+        }
+        if let Some((hertz, damping_ratio)) = self.spring {
+            d.enable_spring = 1;
+            d.hertz = hertz;
+            d.damping_ratio = damping_ratio;
+        }
+        d.collide_connected = self.collide_connected as i32;
+        d.length = self.length;
+        d.max_motor_torque = self.max_torque;
+        d
+    }
 }
 
 /// The statuses the library gives for this crate's (carom_world_def,
@@ -661,6 +869,97 @@ impl World {
         d.polygon = Some(on_polygon);
         d.circle = Some(on_circle);
         d.user = &mut sink as *mut Sink as *mut c_void;
+        d.draw_contacts = 0;
+        check(unsafe { carom_world_draw(self.as_ptr(), &d) })
+    }
+}
+
+/// Version 0.2: joints.
+impl World {
+    /// Add a joint (`carom_world_add_joint`); it wakes both bodies, which
+    /// stop colliding with each other unless `collide_connected`.
+    pub fn add_joint(&mut self, def: &JointDef) -> Result<carom_joint_id> {
+        let def = def.to_raw();
+        let mut id = CAROM_NULL_JOINT;
+        check(unsafe { carom_world_add_joint(self.as_ptr(), &def, &mut id) })?;
+        Ok(id)
+    }
+
+    /// Remove a joint; its id becomes stale. Removing a body removes its
+    /// joints too.
+    pub fn remove_joint(&mut self, id: carom_joint_id) -> Result<()> {
+        check(unsafe { carom_world_remove_joint(self.as_ptr(), id) })
+    }
+
+    pub fn joint_is_alive(&self, id: carom_joint_id) -> bool {
+        unsafe { carom_joint_check(self.as_ptr(), id) == CAROM_OK }
+    }
+
+    pub fn joint_count(&self) -> usize {
+        unsafe { carom_world_joint_count(self.as_ptr()) }.max(0) as usize
+    }
+
+    pub fn joint_type(&self, id: carom_joint_id) -> Result<carom_joint_type> {
+        let mut t = 0;
+        check(unsafe { carom_joint_get_bodies(self.as_ptr(), id, &mut t, ptr::null_mut(), ptr::null_mut()) })?;
+        Ok(t)
+    }
+
+    /// (a, b); a is [`CAROM_NULL_BODY`] for a joint to the world.
+    pub fn joint_bodies(&self, id: carom_joint_id) -> Result<(carom_body_id, carom_body_id)> {
+        let (mut a, mut b) = (CAROM_NULL_BODY, CAROM_NULL_BODY);
+        check(unsafe { carom_joint_get_bodies(self.as_ptr(), id, ptr::null_mut(), &mut a, &mut b) })?;
+        Ok((a, b))
+    }
+
+    /// The anchors on a and on b now, in world coordinates (a mouse
+    /// joint's: b's grabbed point, then the target).
+    pub fn joint_anchors(&self, id: carom_joint_id) -> Result<((f64, f64), (f64, f64))> {
+        let (mut ax, mut ay, mut bx, mut by) = (0.0, 0.0, 0.0, 0.0);
+        check(unsafe { carom_joint_get_anchors(self.as_ptr(), id, &mut ax, &mut ay, &mut bx, &mut by) })?;
+        Ok(((ax, ay), (bx, by)))
+    }
+
+    /// (fx, fy, torque): the constraint force on body b (at its anchor)
+    /// and torque, averaged over the last step; zeros before the first.
+    pub fn joint_reaction(&self, id: carom_joint_id) -> Result<(f64, f64, f64)> {
+        let (mut fx, mut fy, mut t) = (0.0, 0.0, 0.0);
+        check(unsafe { carom_joint_get_reaction(self.as_ptr(), id, &mut fx, &mut fy, &mut t) })?;
+        Ok((fx, fy, t))
+    }
+
+    /// Turn a joint's motor on or off, with its speed and most force (a
+    /// torque for revolute and wheel joints); wakes the bodies.
+    pub fn set_joint_motor(&mut self, id: carom_joint_id, enable: bool, speed: f64, max_force: f64) -> Result<()> {
+        check(unsafe { carom_joint_set_motor(self.as_ptr(), id, enable as i32, speed, max_force) })
+    }
+
+    /// Move a mouse joint's target (the world point (x, y); `angle` is
+    /// ignored) or a motor joint's (b's centre in a's frame, and b's angle
+    /// less a's); wakes the bodies.
+    pub fn set_joint_target(&mut self, id: carom_joint_id, x: f64, y: f64, angle: f64) -> Result<()> {
+        check(unsafe { carom_joint_set_target(self.as_ptr(), id, x, y, angle) })
+    }
+
+    /// Every joint through the debug draw, in slot order: its type, id and
+    /// four points, the centre of body a, the anchor on a, the anchor on b
+    /// and the centre of body b (for a joint to the world the first two are
+    /// its fixed point; for a mouse joint, its target).
+    pub fn draw_joints(&self, mut joint: impl FnMut(carom_joint_type, carom_joint_id, &[[f64; 2]; 4])) -> Result<()> {
+        struct Sink<'a> {
+            joint: &'a mut dyn FnMut(carom_joint_type, carom_joint_id, &[[f64; 2]; 4]),
+        }
+        unsafe extern "C" fn on_joint(t: carom_joint_type, xy: *const f64, id: carom_joint_id, user: *mut c_void) {
+            let sink = &mut *(user as *mut Sink);
+            let pts = &*(xy as *const [[f64; 2]; 4]);
+            (sink.joint)(t, id, pts);
+        }
+        let mut sink = Sink { joint: &mut joint };
+        let (mut d, status) = defaults(carom_debug_draw_init);
+        check(status)?;
+        d.joint = Some(on_joint);
+        d.user = &mut sink as *mut Sink as *mut c_void;
+        d.draw_bodies = 0;
         d.draw_contacts = 0;
         check(unsafe { carom_world_draw(self.as_ptr(), &d) })
     }

@@ -1,0 +1,502 @@
+/* The joints' direct solve. A chain of light links holding a heavy weight,
+ * solved one joint at a time, stretches: each pass moves the error a link
+ * along, and the weight's pull is a hundred times what a link can pass on
+ * in one pass. Solved all at once, the rigid rows of the joints (points,
+ * angles, lines, lengths) are exact in every pass, whatever the masses.
+ *
+ * The joints whose dynamic bodies form a forest (no loop among the bodies,
+ * and each tree at most one joint to the ground, static or kinematic
+ * bodies, or the world) make a sparse symmetric system
+ *
+ *   [ M  J^T ] [ y ]   [  0 ]
+ *   [ J   0  ] [ x ] = [ -r ]      so  J M^-1 J^T x = r,
+ *
+ * whose graph, with a node per body and per joint, is that forest. Each
+ * tree is eliminated from its leaves to its root and solved back from the
+ * root, block by block, without fill-in: linear time, exact to rounding
+ * (Baraff, "Linear-time dynamics using Lagrange multipliers", 1996). A
+ * joint that would close a loop is solved one at a time, as the other
+ * constraints are. The tree is chosen once per update, in slot order, so
+ * the result is deterministic. */
+#include "joint.h"
+
+#include <string.h>
+
+#include "solver.h"
+#include "world.h"
+
+int joint_tree_reserve (carom_world *world)
+{
+  joint_tree *t = &world->joint_tree;
+  int32_t s = world->slot_count, j = world->joints.count;
+  if (world->joints.live == 0)
+    return 1;
+  return mem_reserve (&world->allocator, (void **) &t->nodes, &t->node_cap, s + j, sizeof (tree_node))
+         && mem_reserve (&world->allocator, (void **) &t->scratch, &t->scratch_cap, 5 * s + 3 * j + 1,
+                         sizeof (int32_t))
+         && mem_reserve (&world->allocator, (void **) &t->group_time, &t->group_cap, s, sizeof (double));
+}
+
+void joint_tree_destroy (carom_world *world)
+{
+  joint_tree *t = &world->joint_tree;
+  mem_free (&world->allocator, t->nodes, (size_t) t->node_cap * sizeof (tree_node));
+  mem_free (&world->allocator, t->scratch, (size_t) t->scratch_cap * sizeof (int32_t));
+  mem_free (&world->allocator, t->group_time, (size_t) t->group_cap * sizeof (double));
+  memset (t, 0, sizeof *t);
+}
+
+/* ------------------------------------------------------------ set-up */
+
+/* A body the direct solve moves: dynamic, awake, with mass and inertia. */
+static int tree_body (const carom_world *world, int32_t slot)
+{
+  const solver_body *b = &world->solver_bodies[slot];
+  return slot >= 0 && b->moves == MOVES_DYNAMIC && b->im > 0.0 && b->ii > 0.0;
+}
+
+/* The ground: the world, or a body nothing moves (static, kinematic,
+ * asleep). */
+static int ground (const carom_world *world, int32_t slot)
+{
+  return slot < 0 || world->solver_bodies[slot].moves != MOVES_DYNAMIC;
+}
+
+static int32_t find (int32_t *uf, int32_t i)
+{
+  while (uf[i] != i)
+    {
+      uf[i] = uf[uf[i]];
+      i = uf[i];
+    }
+  return i;
+}
+
+static int32_t add_node (joint_tree *t, int32_t body, int32_t joint, int32_t parent)
+{
+  tree_node *n = &t->nodes[t->node_count];
+  n->body = body, n->joint = joint, n->parent = parent;
+  return t->node_count++;
+}
+
+void joint_tree_build (carom_world *world)
+{
+  joint_tree *t = &world->joint_tree;
+  joints *js = &world->joints;
+  int32_t s = world->slot_count, i, k;
+  int32_t *uf = t->scratch, *pendant = uf + s, *start = pendant + s, *adj = start + s + 1, *body_node = adj + 2 * js->count;
+  int32_t *queue = body_node + s; /* s + joints */
+  t->node_count = 0;
+  t->mixed = 0;
+  for (i = 0; i < s; ++i)
+    uf[i] = i, pendant[i] = 0, start[i] = 0, body_node[i] = -1;
+  start[s] = 0;
+  /* which joints: in slot order, each that keeps the bodies a forest */
+  for (i = 0; i < js->count; ++i)
+    {
+      joint *j = &js->list[i];
+      int ta, tb;
+      j->tree = 0;
+      j->node = -1;
+      if (!j->alive || joint_row_count (j) == 0)
+        continue;
+      ta = tree_body (world, j->a);
+      tb = tree_body (world, j->b);
+      if (!(ta || ground (world, j->a)) || !(tb || ground (world, j->b)) || !(ta || tb))
+        continue;
+      if (ta && tb)
+        {
+          int32_t ra = find (uf, j->a), rb = find (uf, j->b);
+          if (ra == rb || (pendant[ra] && pendant[rb]))
+            continue;
+          uf[ra] = rb;
+          if (!pendant[rb])
+            pendant[rb] = pendant[ra];
+        }
+      else
+        {
+          int32_t r = find (uf, ta ? j->a : j->b);
+          if (pendant[r])
+            continue;
+          pendant[r] = i + 1;
+        }
+      j->tree = 1;
+      t->mixed |= j->enable_limit || j->enable_motor || j->enable_spring;
+      if (ta)
+        start[j->a]++;
+      if (tb)
+        start[j->b]++;
+    }
+  /* each body's tree joints, as offsets into adj */
+  for (i = 0, k = 0; i <= s; ++i)
+    {
+      int32_t n = i < s ? start[i] : 0;
+      start[i] = k;
+      k += n;
+    }
+  for (i = 0; i < s; ++i)
+    body_node[i] = start[i]; /* where the next of its joints goes */
+  for (i = 0; i < js->count; ++i)
+    {
+      joint *j = &js->list[i];
+      if (!j->tree)
+        continue;
+      if (tree_body (world, j->a))
+        adj[body_node[j->a]++] = i;
+      if (tree_body (world, j->b))
+        adj[body_node[j->b]++] = i;
+    }
+  for (i = 0; i < s; ++i)
+    body_node[i] = -1;
+  /* breadth first from each tree's root: its joint to the ground, else
+   * the first body met */
+  for (i = 0; i < js->count; ++i)
+    {
+      joint *j = &js->list[i];
+      int32_t head, tail = 0, root, r;
+      if (!j->tree || j->node >= 0)
+        continue;
+      r = find (uf, tree_body (world, j->a) ? j->a : j->b);
+      head = 0;
+      if (pendant[r] > 0)
+        {
+          joint *p = &js->list[pendant[r] - 1];
+          p->node = add_node (t, -1, pendant[r] - 1, -1);
+          queue[tail++] = -(pendant[r] - 1) - 1;
+        }
+      else
+        {
+          root = tree_body (world, j->a) ? j->a : j->b;
+          body_node[root] = add_node (t, root, -1, -1);
+          queue[tail++] = root;
+        }
+      while (head < tail)
+        {
+          int32_t q = queue[head++];
+          if (q >= 0)
+            {
+              /* a body: its joints other than its parent */
+              for (k = start[q]; k < start[q + 1]; ++k)
+                {
+                  joint *c = &js->list[adj[k]];
+                  if (c->node >= 0)
+                    continue;
+                  c->node = add_node (t, -1, adj[k], body_node[q]);
+                  queue[tail++] = -adj[k] - 1;
+                }
+            }
+          else
+            {
+              /* a joint: its bodies other than its parent */
+              joint *c = &js->list[-q - 1];
+              int32_t side;
+              for (side = 0; side < 2; ++side)
+                {
+                  int32_t b = side ? c->b : c->a;
+                  if (!tree_body (world, b) || body_node[b] >= 0)
+                    continue;
+                  body_node[b] = add_node (t, b, -1, c->node);
+                  queue[tail++] = b;
+                }
+            }
+        }
+    }
+}
+
+/* -------------------------------------------------------- 3 x 3 blocks */
+
+/* c = a b (3 x 3, row-major) */
+static void mul (const double *a, const double *b, double *c)
+{
+  int r, k;
+  for (r = 0; r < 3; ++r)
+    for (k = 0; k < 3; ++k)
+      c[3 * r + k] = a[3 * r] * b[k] + a[3 * r + 1] * b[3 + k] + a[3 * r + 2] * b[6 + k];
+}
+
+/* d -= a^T b */
+static void sub_tmul (double *d, const double *a, const double *b)
+{
+  int r, k;
+  for (r = 0; r < 3; ++r)
+    for (k = 0; k < 3; ++k)
+      d[3 * r + k] -= a[r] * b[k] + a[3 + r] * b[3 + k] + a[6 + r] * b[6 + k];
+}
+
+/* the inverse of a 3 x 3 block (0 where it is singular), computed on the
+ * block scaled to its largest entry: a joint's rows hold lever arms, and
+ * the determinant of the unscaled block is their sixth power, which leaves
+ * the doubles long before the block itself does */
+static void invert (double *m)
+{
+  double big = 0.0, a, b, c, d, e, f, g, h, i, A, B, C, det;
+  int k;
+  for (k = 0; k < 9; ++k)
+    big = fabs (m[k]) > big ? fabs (m[k]) : big;
+  if (!(big > 0.0) || !isfinite (big))
+    {
+      for (k = 0; k < 9; ++k)
+        m[k] = 0.0;
+      return;
+    }
+  a = m[0] / big, b = m[1] / big, c = m[2] / big, d = m[3] / big, e = m[4] / big, f = m[5] / big;
+  g = m[6] / big, h = m[7] / big, i = m[8] / big;
+  A = e * i - f * h, B = -(d * i - f * g), C = d * h - e * g;
+  det = a * A + b * B + c * C;
+  if (det != 0.0)
+    det = 1.0 / (det * big);
+  m[0] = A * det, m[1] = -(b * i - c * h) * det, m[2] = (b * f - c * e) * det;
+  m[3] = B * det, m[4] = (a * i - c * g) * det, m[5] = -(a * f - c * d) * det;
+  m[6] = C * det, m[7] = -(a * h - b * g) * det, m[8] = (a * e - b * d) * det;
+}
+
+/* ------------------------------------------------------------- a pass */
+
+/* The joint's block against the body in `slot`: its rows for a or b. */
+static const double *joint_block (const joint *j, int32_t slot)
+{
+  return slot == j->b ? j->jb : j->ja;
+}
+
+/* Factor the system of this pass's rows and solve it for the right-hand
+ * side each joint node holds in x: leaves up, then back down from the
+ * roots. */
+static void factor_solve (joint_tree *t)
+{
+  int32_t i, r;
+  for (i = t->node_count - 1; i >= 0; --i)
+    {
+      tree_node *n = &t->nodes[i];
+      invert (n->d);
+      if (n->parent >= 0)
+        {
+          tree_node *p = &t->nodes[n->parent];
+          mul (n->d, n->h, n->l);
+          sub_tmul (p->d, n->h, n->l);
+          for (r = 0; r < 3; ++r)
+            p->x[r] -= n->l[r] * n->x[0] + n->l[3 + r] * n->x[1] + n->l[6 + r] * n->x[2];
+        }
+    }
+  for (i = 0; i < t->node_count; ++i)
+    {
+      tree_node *n = &t->nodes[i];
+      double y[3];
+      for (r = 0; r < 3; ++r)
+        y[r] = n->d[3 * r] * n->x[0] + n->d[3 * r + 1] * n->x[1] + n->d[3 * r + 2] * n->x[2];
+      if (n->parent >= 0)
+        {
+          const double *xp = t->nodes[n->parent].x;
+          for (r = 0; r < 3; ++r)
+            y[r] -= n->l[3 * r] * xp[0] + n->l[3 * r + 1] * xp[1] + n->l[3 * r + 2] * xp[2];
+        }
+      memcpy (n->x, y, sizeof y);
+    }
+}
+
+/* The projection corrects at most a body's size of a point's error and
+ * MAX_PROJECTION_TURN of an angle's per pass (as Box2D v2's position
+ * solver bounds its corrections): an error that large comes from a body
+ * placed by hand or from forces beyond any joint's hold, and corrected at
+ * once it would fling the bodies. */
+#define MAX_PROJECTION_TURN 0.5
+
+/* The smaller size of the joint's bodies (the dynamic one's, to the world). */
+static double joint_reach (const carom_world *world, const joint *j)
+{
+  double sb = world->bodies[j->b].shape.size;
+  if (j->a < 0)
+    return sb;
+  return world->bodies[j->a].shape.size < sb ? world->bodies[j->a].shape.size : sb;
+}
+
+/* A row's error within those bounds; a row that moves no point (its
+ * linear entries 0 on both bodies) is an angle. */
+static double clamp_error (double c, const double *ja, const double *jb, double reach)
+{
+  double max = ja[0] == 0.0 && ja[1] == 0.0 && jb[0] == 0.0 && jb[1] == 0.0 ? MAX_PROJECTION_TURN : reach;
+  return c < -max ? -max : c > max ? max : c;
+}
+
+/* Set up every node's blocks from the joints' rows; each joint node's
+ * right-hand side is its rows' velocity error J v (or position error C),
+ * so that the solution there is x = -K^-1 J v (or -K^-1 C), K = J M^-1 J^T,
+ * and at each body M^-1 J^T x, what x does to it. The velocity pass takes
+ * the rows where the bodies are; the position pass keeps the rows of the
+ * sub-step's start (those of its solve pass) and takes only the error
+ * where the bodies moved to, as RATTLE's position step does: the
+ * correction then points along the constraint's normal at the start, and
+ * leaves the motion along it alone, so a pendulum's swing loses no energy
+ * to it. */
+static void load (carom_world *world, int position)
+{
+  joint_tree *t = &world->joint_tree;
+  joints *js = &world->joints;
+  const solver_body *sb = world->solver_bodies;
+  int32_t i, r, k;
+  for (i = 0; i < t->node_count; ++i)
+    {
+      tree_node *n = &t->nodes[i];
+      memset (n->d, 0, sizeof n->d);
+      memset (n->h, 0, sizeof n->h);
+      memset (n->x, 0, sizeof n->x);
+      if (n->joint >= 0)
+        {
+          joint *j = &js->list[n->joint];
+          const solver_body *A = &sb[j->a < 0 ? world->slot_count : j->a], *B = &sb[j->b];
+          double c[3] = {0.0, 0.0, 0.0}, ja[9], jb[9];
+          double reach = joint_reach (world, j);
+          if (position == 1)
+            joint_rows (j, A, B, ja, jb, c); /* the error now; the rows stay the solve's */
+          else
+            {
+              memset (j->ja, 0, sizeof j->ja);
+              memset (j->jb, 0, sizeof j->jb);
+              joint_rows (j, A, B, j->ja, j->jb, c);
+            }
+          n->rows = joint_row_count (j);
+          for (r = 0; r < 3; ++r)
+            {
+              const double *a = j->ja + 3 * r, *b = j->jb + 3 * r;
+              if (r >= n->rows)
+                n->d[4 * r] = 1.0; /* an unused row: x = 0 */
+              else if (position)
+                n->x[r] = clamp_error (c[r], a, b, reach);
+              else
+                n->x[r] = a[0] * A->v.x + a[1] * A->v.y + a[2] * A->w + b[0] * B->v.x + b[1] * B->v.y
+                          + b[2] * B->w;
+            }
+          if (n->parent >= 0)
+            memcpy (n->h, joint_block (j, t->nodes[n->parent].body), sizeof n->h);
+        }
+      else
+        {
+          const solver_body *b = &sb[n->body];
+          n->rows = 3;
+          n->d[0] = n->d[4] = 1.0 / b->im;
+          n->d[8] = 1.0 / b->ii;
+          if (n->parent >= 0)
+            {
+              /* the transpose of the parent joint's block for this body */
+              const double *jb = joint_block (&js->list[t->nodes[n->parent].joint], n->body);
+              for (r = 0; r < 3; ++r)
+                for (k = 0; k < 3; ++k)
+                  n->h[3 * r + k] = jb[3 * k + r];
+            }
+        }
+    }
+}
+
+/* J^T x of a joint node for its body a (pa) and b (pb) */
+static void joint_push (const joint *j, const tree_node *n, double *pa, double *pb)
+{
+  int32_t r, k;
+  for (k = 0; k < 3; ++k)
+    pa[k] = pb[k] = 0.0;
+  for (r = 0; r < n->rows; ++r)
+    for (k = 0; k < 3; ++k)
+      pa[k] += j->ja[3 * r + k] * n->x[r], pb[k] += j->jb[3 * r + k] * n->x[r];
+}
+
+void joint_tree_solve (carom_world *world)
+{
+  joint_tree *t = &world->joint_tree;
+  joints *js = &world->joints;
+  solver_body *sb = world->solver_bodies;
+  int32_t i;
+  if (t->node_count == 0)
+    return;
+  load (world, 0);
+  factor_solve (t);
+  /* x = -K^-1 J v: the impulses that zero every row's velocity error at
+   * once */
+  for (i = 0; i < t->node_count; ++i)
+    {
+      tree_node *n = &t->nodes[i];
+      joint *j;
+      solver_body *A, *B;
+      double pa[3], pb[3];
+      if (n->joint < 0)
+        continue;
+      j = &js->list[n->joint];
+      A = &sb[j->a < 0 ? world->slot_count : j->a];
+      B = &sb[j->b];
+      joint_push (j, n, pa, pb);
+      {
+        solver_body a = *A, b = *B;
+        a.v.x += a.im * pa[0], a.v.y += a.im * pa[1], a.w += a.ii * pa[2];
+        b.v.x += b.im * pb[0], b.v.y += b.im * pb[1], b.w += b.ii * pb[2];
+        if (!joint_sane (&a) || !joint_sane (&b))
+          continue; /* beyond the doubles: this joint holds nothing this pass */
+        *A = a, *B = b;
+      }
+      joint_rows_add (j, n->x);
+    }
+}
+
+/* Turn a body's rotation since the step began by a small angle: first
+ * order, renormalised, as the sub-step's move does (solver.c). */
+static void turn (solver_body *b, double a)
+{
+  double c = b->dq.c - a * b->dq.s, s = b->dq.s + a * b->dq.c, n = 1.0 / sqrt (c * c + s * s);
+  b->dq.c = c * n, b->dq.s = s * n;
+  b->da += a;
+}
+
+/* Move a body by M^-1 p (p = J^T x) and give it the velocity of that move
+ * over the sub-step. */
+static void displace (solver_body *b, const double *p, double inv_h)
+{
+  double dx = b->im * p[0], dy = b->im * p[1], da = b->ii * p[2];
+  if (b->im == 0.0 && b->ii == 0.0)
+    return;
+  b->dp.x += dx, b->dp.y += dy;
+  turn (b, da);
+  b->v.x += dx * inv_h, b->v.y += dy * inv_h;
+  b->w += da * inv_h;
+}
+
+static void project (carom_world *world, const step_context *ctx, int rows_now)
+{
+  joint_tree *t = &world->joint_tree;
+  joints *js = &world->joints;
+  solver_body *sb = world->solver_bodies;
+  int32_t i;
+  load (world, rows_now ? 2 : 1);
+  factor_solve (t);
+  for (i = 0; i < t->node_count; ++i)
+    {
+      tree_node *n = &t->nodes[i];
+      joint *j;
+      double pa[3], pb[3];
+      if (n->joint < 0)
+        continue;
+      j = &js->list[n->joint];
+      joint_push (j, n, pa, pb);
+      {
+        solver_body *A = &sb[j->a < 0 ? world->slot_count : j->a], *B = &sb[j->b], a = *A, b = *B;
+        displace (&a, pa, ctx->inv_h);
+        displace (&b, pb, ctx->inv_h);
+        if (joint_sane (&a) && joint_sane (&b))
+          *A = a, *B = b;
+      }
+    }
+}
+
+/* x = -K^-1 C: the displacements that remove every row's position error
+ * at once, to first order. The bodies take the velocity of that move as
+ * well, as in position-based dynamics and RATTLE: a taut chain's tension
+ * then acts on its sideways waves within the sub-step, which keeps them
+ * stable (moved without it, a chain holding a heavy weight zigzags apart);
+ * the relax pass that follows removes what of it the joints forbid. Three
+ * passes: along the rows of the sub-step's start (RATTLE's direction,
+ * which keeps a swing's energy), then twice along the rows where the
+ * bodies are (Newton's, which removes what the first left, also when the
+ * bodies turned fast within the sub-step: a chain that snaps taut). */
+void joint_tree_project (carom_world *world, const step_context *ctx)
+{
+  if (world->joint_tree.node_count == 0)
+    return;
+  project (world, ctx, 0);
+  project (world, ctx, 1);
+  project (world, ctx, 1);
+}
