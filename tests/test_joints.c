@@ -340,6 +340,88 @@ static void test_motors_reach_their_speed (void **state)
   carom_world_destroy (w);
 }
 
+/* A motor's torque is bounded: a bar driven from rest by a motor too weak
+ * to reach its speed spins up at max torque / inertia, to rounding. */
+static void test_motor_torque_is_bounded (void **state)
+{
+  carom_world *w = new_world (0.0);
+  carom_body_id bar = add_box (w, CAROM_DYNAMIC, 0.0, 0.0, 0.0, 2.0, 0.2);
+  carom_joint_def d;
+  double m, inertia, spin;
+  (void) state;
+  carom_body_get_mass (w, bar, &m, &inertia, NULL);
+  carom_joint_def_init (&d, sizeof d);
+  d.type = CAROM_JOINT_REVOLUTE, d.b = bar;
+  d.enable_motor = 1, d.motor_speed = 100.0, d.max_motor_force = 0.5 * inertia;
+  assert_status (carom_world_add_joint (w, &d, NULL), CAROM_OK);
+  step (w, 30);
+  carom_body_get_spin (w, bar, &spin);
+  assert_near_rel (spin, 0.5 * 30 * DT, 1e-9);
+  carom_world_destroy (w);
+}
+
+/* A slider on a prismatic joint along a spinning rod (no gravity) flies
+ * out along it and stays on it: the axis turns with the rod. */
+static void test_prismatic_axis_turns_with_its_body (void **state)
+{
+  carom_world *w = new_world (0.0);
+  carom_body_id rod = add_box (w, CAROM_DYNAMIC, 0.0, 0.0, 0.0, 4.0, 0.1);
+  carom_body_id slider = add_box (w, CAROM_DYNAMIC, 0.5, 0.0, 0.0, 0.2, 0.2);
+  carom_joint_def d;
+  double worst = 0.0;
+  int s;
+  (void) state;
+  carom_joint_def_init (&d, sizeof d);
+  d.type = CAROM_JOINT_REVOLUTE, d.b = rod;
+  assert_status (carom_world_add_joint (w, &d, NULL), CAROM_OK);
+  carom_joint_def_init (&d, sizeof d);
+  d.type = CAROM_JOINT_PRISMATIC, d.a = rod, d.b = slider, d.x = 0.5, d.axis_x = 1.0;
+  d.enable_limit = 1, d.lower = -0.4, d.upper = 1.4;
+  assert_status (carom_world_add_joint (w, &d, NULL), CAROM_OK);
+  assert_status (carom_body_set_spin (w, rod, 3.0), CAROM_OK);
+  for (s = 0; s < 120; ++s)
+    {
+      double angle, x, y, off;
+      step (w, 1);
+      carom_body_get_angle (w, rod, &angle);
+      carom_body_get_position (w, slider, &x, &y);
+      off = fabs (-x * sin (angle) + y * cos (angle));
+      worst = off > worst ? off : worst;
+    }
+  if (!(worst <= 1e-3))
+    fail_msg ("the slider left the spinning rod's axis by %g", worst);
+  carom_world_destroy (w);
+}
+
+/* A body joined to one that moves stays awake with it: a box resting on
+ * the floor, tied by a slack rope to a pendulum that swings. */
+static void test_a_group_sleeps_only_when_all_of_it_rests (void **state)
+{
+  carom_world *w = new_world (G);
+  carom_body_id box, bob;
+  carom_joint_def d;
+  int32_t awake;
+  int s;
+  (void) state;
+  assert_status (carom_world_set_sleeping (w, 1), CAROM_OK);
+  add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 10.0, 1.0);
+  box = add_box (w, CAROM_DYNAMIC, -2.0, 0.25, 0.0, 0.5, 0.5);
+  bob = add_disc (w, 1.0, 2.0, 0.1);
+  add_joint (w, CAROM_JOINT_REVOLUTE, CAROM_NULL_BODY, bob, 0.0, 3.0);
+  carom_joint_def_init (&d, sizeof d);
+  d.type = CAROM_JOINT_DISTANCE, d.a = box, d.b = bob, d.x = -2.0, d.y = 0.25, d.x2 = 1.0, d.y2 = 2.0;
+  d.enable_spring = 1, d.hertz = 0.0; /* a rope: free within its limit */
+  d.enable_limit = 1, d.lower = 0.0, d.upper = 10.0;
+  assert_status (carom_world_add_joint (w, &d, NULL), CAROM_OK);
+  for (s = 0; s < 180; ++s)
+    {
+      step (w, 1);
+      assert_status (carom_body_is_awake (w, box, &awake), CAROM_OK);
+      assert_int_equal (awake, 1);
+    }
+  carom_world_destroy (w);
+}
+
 /* A prismatic body stays on its axis within 1 mm while gravity pulls
  * across it, for several axes, with and without a motor along it. */
 static void test_prismatic_stays_on_its_axis (void **state)
@@ -646,6 +728,9 @@ int main (void)
     cmocka_unit_test (test_heavy_chain_does_not_stretch),
     cmocka_unit_test (test_revolute_limit_holds),
     cmocka_unit_test (test_motors_reach_their_speed),
+    cmocka_unit_test (test_motor_torque_is_bounded),
+    cmocka_unit_test (test_prismatic_axis_turns_with_its_body),
+    cmocka_unit_test (test_a_group_sleeps_only_when_all_of_it_rests),
     cmocka_unit_test (test_prismatic_stays_on_its_axis),
     cmocka_unit_test (test_distance_spring_period),
     cmocka_unit_test (test_welded_cantilever_holds),
