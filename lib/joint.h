@@ -104,6 +104,14 @@ void joint_anchors (const struct carom_world *world, const joint *j, vec2 *pa, v
  * soft correction of the error (use_bias) and, after the move, the relax
  * pass without it; the reaction summed per sub-step. */
 void joint_prepare (struct carom_world *world, const step_context *ctx);
+/* After the contacts' set-up: mark the joints' bodies as constrained
+ * (they move by the velocity the solver leaves), and those of groups no
+ * contact acts on as moving by leapfrog (CONSTRAINED_JOINT, gravity.h). A
+ * group a contact holds keeps symplectic Euler: its contacts' and joints'
+ * warm-start impulses are sized for a whole sub-step's gravity before the
+ * move, and with half of it after the move they would leave the group a
+ * half-kick short of rest. */
+void joint_mark_bodies (struct carom_world *world);
 void joint_warm_start (struct carom_world *world);
 void joint_solve (struct carom_world *world, const step_context *ctx, int use_bias);
 void joint_project (struct carom_world *world, const step_context *ctx);

@@ -148,11 +148,6 @@ void joint_prepare (carom_world *world, const step_context *ctx)
       j->angular_mass = sa->ii + sb->ii > 0.0 ? 1.0 / (sa->ii + sb->ii) : 0.0;
       j->spring = joint_soft_make (j->enable_spring || j->type == CAROM_JOINT_MOUSE ? j->hertz : 0.0,
                                    j->damping_ratio, ctx->h);
-      /* the bodies move by leapfrog (gravity.h) */
-      if (sa->moves)
-        sa->constrained |= CONSTRAINED_ANY | (sa->moves == MOVES_DYNAMIC ? CONSTRAINED_JOINT : 0);
-      if (sb->moves)
-        sb->constrained |= CONSTRAINED_ANY | (sb->moves == MOVES_DYNAMIC ? CONSTRAINED_JOINT : 0);
       if (!j->enable_motor)
         j->motor_impulse = 0.0;
       if (!j->enable_limit)
@@ -163,6 +158,54 @@ void joint_prepare (carom_world *world, const step_context *ctx)
       j->reaction_torque_sum = 0.0;
     }
   joint_tree_build (world);
+}
+
+static int32_t find (int32_t *uf, int32_t i)
+{
+  while (uf[i] != i)
+    {
+      uf[i] = uf[uf[i]];
+      i = uf[i];
+    }
+  return i;
+}
+
+void joint_mark_bodies (carom_world *world)
+{
+  joints *js = &world->joints;
+  solver_body *sb = world->solver_bodies;
+  int32_t *uf = world->joint_tree.scratch, *touched = uf + world->slot_count, i;
+  for (i = 0; i < world->slot_count; ++i)
+    uf[i] = i, touched[i] = 0;
+  for (i = 0; i < js->count; ++i)
+    {
+      const joint *j = &js->list[i];
+      if (j->alive && j->a >= 0 && sb[j->a].moves == MOVES_DYNAMIC && sb[j->b].moves == MOVES_DYNAMIC)
+        uf[find (uf, j->a)] = find (uf, j->b);
+    }
+  /* the groups some contact acts on (the only bits set so far) */
+  for (i = 0; i < world->slot_count; ++i)
+    if (sb[i].moves == MOVES_DYNAMIC && sb[i].constrained)
+      touched[find (uf, i)] = 1;
+  for (i = 0; i < js->count; ++i)
+    {
+      const joint *j = &js->list[i];
+      int32_t side;
+      if (!j->alive)
+        continue;
+      for (side = 0; side < 2; ++side)
+        {
+          int32_t slot = side ? j->b : j->a;
+          solver_body *b;
+          if (slot < 0)
+            continue;
+          b = &sb[slot];
+          if (b->moves == MOVES_DYNAMIC)
+            b->constrained |= CONSTRAINED_ANY | (touched[find (uf, slot)] ? 0 : CONSTRAINED_JOINT);
+          else if (b->moves)
+            b->constrained |= CONSTRAINED_ANY;
+        }
+    }
 }
 
 /* ------------------------------------------------ applying an impulse */

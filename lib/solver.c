@@ -167,6 +167,8 @@ void solver_step (carom_world *world, const step_context *ctx)
       contact_batch_prepare (world, ctx);
       contact_shock_prepare (world, ctx);
     }
+  if (joints)
+    joint_mark_bodies (world);
   for (k = 0; k < ctx->substeps; ++k)
     {
       gravity_kick (world, ctx);

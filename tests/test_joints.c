@@ -194,6 +194,36 @@ static void test_hanging_reaction_is_the_weight (void **state)
     }
 }
 
+/* A disc hanging by a revolute or weld joint from a box that rests on the
+ * floor: the reaction is the disc's weight within 1% (and a weld's torque
+ * its moment), and the disc, at rest, reports no speed. */
+static void test_reaction_from_a_body_on_a_contact (void **state)
+{
+  int weld;
+  (void) state;
+  for (weld = 0; weld < 2; ++weld)
+    {
+      carom_world *w = new_world (G);
+      carom_body_id box, disc;
+      carom_joint_id j;
+      double m, fx, fy, torque, vx, vy;
+      add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 10.0, 1.0);
+      box = add_box (w, CAROM_DYNAMIC, 0.0, 0.25, 0.0, 1.0, 0.5);
+      disc = add_disc (w, 0.7, 0.2, 0.05);
+      j = add_joint (w, weld ? CAROM_JOINT_WELD : CAROM_JOINT_REVOLUTE, box, disc, 0.7, 0.5);
+      step (w, 300);
+      carom_body_get_mass (w, disc, &m, NULL, NULL);
+      assert_status (carom_joint_get_reaction (w, j, &fx, &fy, &torque), CAROM_OK);
+      assert_near_rel (fy, m * G, 1e-2);
+      assert_near_abs (fx, 0.0, 1e-2 * m * G);
+      assert_near_abs (torque, 0.0, 1e-2 * m * G * 0.3);
+      carom_body_get_velocity (w, disc, &vx, &vy);
+      assert_near_abs (vx, 0.0, 1e-4);
+      assert_near_abs (vy, 0.0, 1e-4);
+      carom_world_destroy (w);
+    }
+}
+
 /* ---------------------------------------------------------------- chain */
 
 /* A chain of 40 links (0.25 x 0.05 boxes on revolute joints) hung from the
@@ -725,6 +755,7 @@ int main (void)
     cmocka_unit_test (test_pendulum_period_is_exact),
     cmocka_unit_test (test_double_pendulum_keeps_its_energy),
     cmocka_unit_test (test_hanging_reaction_is_the_weight),
+    cmocka_unit_test (test_reaction_from_a_body_on_a_contact),
     cmocka_unit_test (test_heavy_chain_does_not_stretch),
     cmocka_unit_test (test_revolute_limit_holds),
     cmocka_unit_test (test_motors_reach_their_speed),
