@@ -79,6 +79,9 @@ typedef struct joint_tree {
   tree_node *nodes;
   int32_t node_count, node_cap;
   int32_t mixed;         /* some tree joint has a limit, motor or spring */
+  int32_t factored;      /* the nodes hold the factors of the rows in the
+                            joints' ja, jb (the bodies have not moved
+                            since, or by little) */
   int32_t *scratch;      /* the set-up's union-find, adjacency and queue;
                             sleep.c's groups */
   int32_t scratch_cap;
@@ -140,8 +143,11 @@ int joint_sane (const struct solver_body *b);
 int joint_tree_reserve (struct carom_world *world);
 void joint_tree_destroy (struct carom_world *world);
 void joint_tree_build (struct carom_world *world);
-/* A pass: the impulses that zero every tree row's velocity error. */
+/* A pass: the impulses that zero every tree row's velocity error (with
+ * the rows factored last, or where the bodies are if none are). */
 void joint_tree_solve (struct carom_world *world);
+/* The bodies are about to move: the next pass factors afresh. */
+void joint_tree_stale (struct carom_world *world);
 /* After a sub-step's move: the displacements that remove every tree row's
  * position error (to first order), leaving the velocities alone (as the
  * contacts' split impulses do). */

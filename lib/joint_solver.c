@@ -242,9 +242,9 @@ static vec2 anchor_velocity (const solver_body *A, const solver_body *B, const f
  * the doubles) is dropped for that joint: it holds what it can. */
 int joint_sane (const solver_body *b)
 {
-  return is_finite (b->v.x) && is_finite (b->v.y) && is_finite (b->w) && is_moderate (b->v.x)
-         && is_moderate (b->v.y) && is_moderate (b->w) && is_finite (b->dp.x) && is_finite (b->dp.y)
-         && is_finite (b->da) && is_moderate (b->dp.x) && is_moderate (b->dp.y) && is_moderate (b->da);
+  /* is_moderate is false for NaN and the infinities too */
+  return is_moderate (b->v.x) && is_moderate (b->v.y) && is_moderate (b->w) && is_moderate (b->dp.x)
+         && is_moderate (b->dp.y) && is_moderate (b->da);
 }
 
 /* ------------------------------------------- constraints shared by types */
@@ -696,6 +696,7 @@ void joint_warm_start (carom_world *world)
 {
   joints *js = &world->joints;
   int32_t i;
+  joint_tree_stale (world); /* the sub-step starts where the last one moved the bodies */
   for (i = 0; i < js->count; ++i)
     {
       joint *j = &js->list[i];
@@ -736,13 +737,16 @@ static void solve_each (carom_world *world, const step_context *ctx, int use_bia
     {
       joint *j = &js->list[i];
       solver_body *SA, *SB, a, b, *A = &a, *B = &b;
-      joint saved;
+      vec2 linear;
+      double angular, axial, motor, lower, upper;
       if (!j->alive)
         continue;
       SA = body_a (world, j);
       SB = body_b (world, j);
       /* on copies, kept only if the bodies stay sane (joint_sane) */
-      a = *SA, b = *SB, saved = *j;
+      a = *SA, b = *SB;
+      linear = j->linear_impulse, angular = j->angular_impulse, axial = j->axial_impulse;
+      motor = j->motor_impulse, lower = j->lower_impulse, upper = j->upper_impulse;
       switch (j->type)
         {
         case CAROM_JOINT_REVOLUTE:
@@ -770,7 +774,10 @@ static void solve_each (carom_world *world, const step_context *ctx, int use_bia
       if (joint_sane (A) && joint_sane (B))
         *SA = a, *SB = b;
       else
-        *j = saved;
+        {
+          j->linear_impulse = linear, j->angular_impulse = angular, j->axial_impulse = axial;
+          j->motor_impulse = motor, j->lower_impulse = lower, j->upper_impulse = upper;
+        }
     }
 }
 

@@ -88,6 +88,7 @@ void joint_tree_build (carom_world *world)
   int32_t *queue = body_node + s; /* s + joints */
   t->node_count = 0;
   t->mixed = 0;
+  t->factored = 0;
   for (i = 0; i < s; ++i)
     uf[i] = i, pendant[i] = 0, start[i] = 0, body_node[i] = -1;
   start[s] = 0;
@@ -224,13 +225,14 @@ static void sub_tmul (double *d, const double *a, const double *b)
 }
 
 /* the inverse of a 3 x 3 block (0 where it is singular), computed on the
- * block scaled to its largest entry: a joint's rows hold lever arms, and
- * the determinant of the unscaled block is their sixth power, which leaves
- * the doubles long before the block itself does */
+ * block scaled by a power of two near its largest entry (exact) when that
+ * entry is far from 1: a joint's rows hold lever arms, and the determinant
+ * of the unscaled block is their sixth power, which leaves the doubles
+ * long before the block itself does */
 static void invert (double *m)
 {
-  double big = 0.0, a, b, c, d, e, f, g, h, i, A, B, C, det;
-  int k;
+  double big = 0.0, s, a, b, c, d, e, f, g, h, i, A, B, C, det;
+  int k, exponent;
   for (k = 0; k < 9; ++k)
     big = fabs (m[k]) > big ? fabs (m[k]) : big;
   if (!(big > 0.0) || !isfinite (big))
@@ -239,12 +241,18 @@ static void invert (double *m)
         m[k] = 0.0;
       return;
     }
-  a = m[0] / big, b = m[1] / big, c = m[2] / big, d = m[3] / big, e = m[4] / big, f = m[5] / big;
-  g = m[6] / big, h = m[7] / big, i = m[8] / big;
+  s = 1.0;
+  if (big > 1e100 || big < 1e-100)
+    {
+      frexp (big, &exponent);
+      s = ldexp (1.0, -exponent);
+    }
+  a = m[0] * s, b = m[1] * s, c = m[2] * s, d = m[3] * s, e = m[4] * s, f = m[5] * s;
+  g = m[6] * s, h = m[7] * s, i = m[8] * s;
   A = e * i - f * h, B = -(d * i - f * g), C = d * h - e * g;
   det = a * A + b * B + c * C;
   if (det != 0.0)
-    det = 1.0 / (det * big);
+    det = s / det;
   m[0] = A * det, m[1] = -(b * i - c * h) * det, m[2] = (b * f - c * e) * det;
   m[3] = B * det, m[4] = (a * i - c * g) * det, m[5] = -(a * f - c * d) * det;
   m[6] = C * det, m[7] = -(a * h - b * g) * det, m[8] = (a * e - b * d) * det;
@@ -258,23 +266,37 @@ static const double *joint_block (const joint *j, int32_t slot)
   return slot == j->b ? j->jb : j->ja;
 }
 
-/* Factor the system of this pass's rows and solve it for the right-hand
- * side each joint node holds in x: leaves up, then back down from the
- * roots. */
-static void factor_solve (joint_tree *t)
+/* Factor the system of the rows in j->ja, j->jb: each node's pivot
+ * block inverted (d) and its block against its parent over that (l),
+ * leaves up (children come after their parents). */
+static void factor (joint_tree *t)
 {
-  int32_t i, r;
+  int32_t i;
   for (i = t->node_count - 1; i >= 0; --i)
     {
       tree_node *n = &t->nodes[i];
       invert (n->d);
       if (n->parent >= 0)
         {
-          tree_node *p = &t->nodes[n->parent];
           mul (n->d, n->h, n->l);
-          sub_tmul (p->d, n->h, n->l);
+          sub_tmul (t->nodes[n->parent].d, n->h, n->l);
+        }
+    }
+}
+
+/* Solve the factored system for the right-hand side in each node's x:
+ * leaves up, then back down from the roots. */
+static void substitute (joint_tree *t)
+{
+  int32_t i, r;
+  for (i = t->node_count - 1; i >= 0; --i)
+    {
+      const tree_node *n = &t->nodes[i];
+      if (n->parent >= 0)
+        {
+          double *xp = t->nodes[n->parent].x;
           for (r = 0; r < 3; ++r)
-            p->x[r] -= n->l[r] * n->x[0] + n->l[3 + r] * n->x[1] + n->l[6 + r] * n->x[2];
+            xp[r] -= n->l[r] * n->x[0] + n->l[3 + r] * n->x[1] + n->l[6 + r] * n->x[2];
         }
     }
   for (i = 0; i < t->node_count; ++i)
@@ -289,7 +311,7 @@ static void factor_solve (joint_tree *t)
           for (r = 0; r < 3; ++r)
             y[r] -= n->l[3 * r] * xp[0] + n->l[3 * r + 1] * xp[1] + n->l[3 * r + 2] * xp[2];
         }
-      memcpy (n->x, y, sizeof y);
+      n->x[0] = y[0], n->x[1] = y[1], n->x[2] = y[2];
     }
 }
 
@@ -317,17 +339,9 @@ static double clamp_error (double c, const double *ja, const double *jb, double 
   return c < -max ? -max : c > max ? max : c;
 }
 
-/* Set up every node's blocks from the joints' rows; each joint node's
- * right-hand side is its rows' velocity error J v (or position error C),
- * so that the solution there is x = -K^-1 J v (or -K^-1 C), K = J M^-1 J^T,
- * and at each body M^-1 J^T x, what x does to it. The velocity pass takes
- * the rows where the bodies are; the position pass keeps the rows of the
- * sub-step's start (those of its solve pass) and takes only the error
- * where the bodies moved to, as RATTLE's position step does: the
- * correction then points along the constraint's normal at the start, and
- * leaves the motion along it alone, so a pendulum's swing loses no energy
- * to it. */
-static void load (carom_world *world, int position)
+/* Each joint's rows where the bodies are now, and the system's blocks
+ * from them, factored: K = J M^-1 J^T for the passes that follow. */
+static void refactor (carom_world *world)
 {
   joint_tree *t = &world->joint_tree;
   joints *js = &world->joints;
@@ -337,34 +351,16 @@ static void load (carom_world *world, int position)
     {
       tree_node *n = &t->nodes[i];
       memset (n->d, 0, sizeof n->d);
-      memset (n->h, 0, sizeof n->h);
-      memset (n->x, 0, sizeof n->x);
       if (n->joint >= 0)
         {
           joint *j = &js->list[n->joint];
-          const solver_body *A = &sb[j->a < 0 ? world->slot_count : j->a], *B = &sb[j->b];
-          double c[3] = {0.0, 0.0, 0.0}, ja[9], jb[9];
-          double reach = joint_reach (world, j);
-          if (position == 1)
-            joint_rows (j, A, B, ja, jb, c); /* the error now; the rows stay the solve's */
-          else
-            {
-              memset (j->ja, 0, sizeof j->ja);
-              memset (j->jb, 0, sizeof j->jb);
-              joint_rows (j, A, B, j->ja, j->jb, c);
-            }
+          double c[3];
+          memset (j->ja, 0, sizeof j->ja);
+          memset (j->jb, 0, sizeof j->jb);
+          joint_rows (j, &sb[j->a < 0 ? world->slot_count : j->a], &sb[j->b], j->ja, j->jb, c);
           n->rows = joint_row_count (j);
-          for (r = 0; r < 3; ++r)
-            {
-              const double *a = j->ja + 3 * r, *b = j->jb + 3 * r;
-              if (r >= n->rows)
-                n->d[4 * r] = 1.0; /* an unused row: x = 0 */
-              else if (position)
-                n->x[r] = clamp_error (c[r], a, b, reach);
-              else
-                n->x[r] = a[0] * A->v.x + a[1] * A->v.y + a[2] * A->w + b[0] * B->v.x + b[1] * B->v.y
-                          + b[2] * B->w;
-            }
+          for (r = n->rows; r < 3; ++r)
+            n->d[4 * r] = 1.0; /* an unused row: x = 0 */
           if (n->parent >= 0)
             memcpy (n->h, joint_block (j, t->nodes[n->parent].body), sizeof n->h);
         }
@@ -382,6 +378,46 @@ static void load (carom_world *world, int position)
                 for (k = 0; k < 3; ++k)
                   n->h[3 * r + k] = jb[3 * k + r];
             }
+        }
+    }
+  factor (t);
+  t->factored = 1;
+}
+
+/* The right-hand side of each joint node: its rows' velocity error J v
+ * (with the factored rows), or their position error C where the bodies
+ * are now, within the projection's bounds; 0 at the bodies. The solution
+ * at a joint node is then x = -K^-1 J v (or -K^-1 C), and at each body
+ * M^-1 J^T x, what x does to it. */
+static void load (carom_world *world, int position)
+{
+  joint_tree *t = &world->joint_tree;
+  joints *js = &world->joints;
+  const solver_body *sb = world->solver_bodies;
+  int32_t i, r;
+  for (i = 0; i < t->node_count; ++i)
+    {
+      tree_node *n = &t->nodes[i];
+      n->x[0] = n->x[1] = n->x[2] = 0.0;
+      if (n->joint >= 0)
+        {
+          joint *j = &js->list[n->joint];
+          const solver_body *A = &sb[j->a < 0 ? world->slot_count : j->a], *B = &sb[j->b];
+          double c[3] = {0.0, 0.0, 0.0}, ja[9], jb[9];
+          if (position)
+            {
+              double reach = joint_reach (world, j);
+              joint_rows (j, A, B, ja, jb, c); /* the error now; the factored rows stay */
+              for (r = 0; r < n->rows; ++r)
+                n->x[r] = clamp_error (c[r], j->ja + 3 * r, j->jb + 3 * r, reach);
+            }
+          else
+            for (r = 0; r < n->rows; ++r)
+              {
+                const double *a = j->ja + 3 * r, *b = j->jb + 3 * r;
+                n->x[r] = a[0] * A->v.x + a[1] * A->v.y + a[2] * A->w + b[0] * B->v.x + b[1] * B->v.y
+                          + b[2] * B->w;
+              }
         }
     }
 }
@@ -405,8 +441,10 @@ void joint_tree_solve (carom_world *world)
   int32_t i;
   if (t->node_count == 0)
     return;
+  if (!t->factored)
+    refactor (world);
   load (world, 0);
-  factor_solve (t);
+  substitute (t);
   /* x = -K^-1 J v: the impulses that zero every row's velocity error at
    * once */
   for (i = 0; i < t->node_count; ++i)
@@ -455,14 +493,14 @@ static void displace (solver_body *b, const double *p, double inv_h)
   b->w += da * inv_h;
 }
 
-static void project (carom_world *world, const step_context *ctx, int rows_now)
+static void project (carom_world *world, const step_context *ctx)
 {
   joint_tree *t = &world->joint_tree;
   joints *js = &world->joints;
   solver_body *sb = world->solver_bodies;
   int32_t i;
-  load (world, rows_now ? 2 : 1);
-  factor_solve (t);
+  load (world, 1);
+  substitute (t);
   for (i = 0; i < t->node_count; ++i)
     {
       tree_node *n = &t->nodes[i];
@@ -489,14 +527,28 @@ static void project (carom_world *world, const step_context *ctx, int rows_now)
  * stable (moved without it, a chain holding a heavy weight zigzags apart);
  * the relax pass that follows removes what of it the joints forbid. Three
  * passes: along the rows of the sub-step's start (RATTLE's direction,
- * which keeps a swing's energy), then twice along the rows where the
- * bodies are (Newton's, which removes what the first left, also when the
- * bodies turned fast within the sub-step: a chain that snaps taut). */
+ * which keeps a swing's energy: the solve pass's factors), then twice along
+ * the rows where the first left the bodies (Newton's, which removes what
+ * the first left, also when the bodies turned fast within the sub-step: a
+ * chain that snaps taut). The relax pass reuses the last factors: the
+ * last Newton pass moves the bodies by far less than the step did (but a
+ * sub-step's solve that reused them too would let a chain that snaps taut
+ * stretch: each sub-step factors afresh). */
 void joint_tree_project (carom_world *world, const step_context *ctx)
 {
-  if (world->joint_tree.node_count == 0)
+  joint_tree *t = &world->joint_tree;
+  if (t->node_count == 0)
     return;
-  project (world, ctx, 0);
-  project (world, ctx, 1);
-  project (world, ctx, 1);
+  if (!t->factored)
+    refactor (world);
+  project (world, ctx);
+  refactor (world);
+  project (world, ctx);
+  refactor (world);
+  project (world, ctx);
+}
+
+void joint_tree_stale (carom_world *world)
+{
+  world->joint_tree.factored = 0;
 }
