@@ -693,7 +693,10 @@ typedef struct carom_joint_def {
   double motor_speed;     /**< rad per time unit, or length per time unit */
   double max_motor_force; /**< >= 0; a torque for revolute and wheel */
   int32_t enable_spring;
-  double hertz;           /**< the spring's frequency, >= 0 (0: rigid) */
+  double hertz;           /**< the spring's frequency, >= 0; 0 exerts no
+                               force (free within the limit: a distance
+                               joint is then a rope), except for a weld,
+                               which 0 leaves rigid */
   double damping_ratio;   /**< >= 0; 1 is critical damping */
   int32_t collide_connected; /**< non-zero: a and b still collide */
   double length;          /**< distance: the rest length, > 0; 0 for the
@@ -740,8 +743,9 @@ CAROM_API carom_status carom_joint_get_bodies (const carom_world *world,
                                                carom_body_id *a,
                                                carom_body_id *b);
 
-/** The two anchors now, in world coordinates (mouse: b's point and the
- * target); any output may be NULL. Errors: NULL_ARGUMENT, STALE_JOINT. */
+/** The two anchors now, in world coordinates: a's, then b's (a mouse
+ * joint's target stands for a's, as in the debug draw); any output may be
+ * NULL. Errors: NULL_ARGUMENT, STALE_JOINT. */
 CAROM_API carom_status carom_joint_get_anchors (const carom_world *world,
                                                 carom_joint_id id,
                                                 double *ax, double *ay,

@@ -368,11 +368,6 @@ carom_status carom_joint_get_anchors (const carom_world *world, carom_joint_id i
   if (!j)
     return CAROM_ERR_STALE_JOINT;
   joint_anchors (world, j, &pa, &pb);
-  if (j->type == CAROM_JOINT_MOUSE)
-    {
-      vec2 t = pa; /* b's point first, then the target */
-      pa = pb, pb = t;
-    }
   if (ax)
     *ax = pa.x;
   if (ay)

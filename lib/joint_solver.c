@@ -42,6 +42,12 @@ joint_soft joint_soft_make (double hertz, double zeta, double h)
   return s;
 }
 
+/* Whether the joint's spring exerts a force: on, and of a frequency. */
+static int springy (const joint *j)
+{
+  return j->enable_spring && j->hertz > 0.0;
+}
+
 static const joint_soft rigid = {0.0, 1.0, 0.0};
 
 /* x = K^-1 b for a symmetric 2x2 K (0 where K is singular), on K scaled
@@ -152,7 +158,7 @@ void joint_prepare (carom_world *world, const step_context *ctx)
         j->motor_impulse = 0.0;
       if (!j->enable_limit)
         j->lower_impulse = j->upper_impulse = 0.0;
-      if (j->type == CAROM_JOINT_DISTANCE ? j->enable_spring && j->hertz == 0.0 : !j->enable_spring)
+      if (j->type == CAROM_JOINT_DISTANCE ? j->enable_spring && j->hertz == 0.0 : !springy (j))
         j->axial_impulse = 0.0;
       j->reaction_sum = v2 (0.0, 0.0);
       j->reaction_torque_sum = 0.0;
@@ -299,7 +305,7 @@ static void solve_angular (joint *j, solver_body *A, solver_body *B, const frame
   double lambda;
   if (j->angular_mass == 0.0)
     return;
-  if (j->enable_spring && j->type == CAROM_JOINT_REVOLUTE)
+  if (springy (j) && j->type == CAROM_JOINT_REVOLUTE)
     {
       joint_soft s = j->spring;
       double cdot = B->w - A->w;
@@ -322,7 +328,7 @@ static void solve_angular (joint *j, solver_body *A, solver_body *B, const frame
     }
   if (j->type == CAROM_JOINT_WELD)
     {
-      joint_soft s = j->enable_spring ? j->spring : rigid_soft (ctx, use_bias);
+      joint_soft s = springy (j) ? j->spring : rigid_soft (ctx, use_bias);
       double cdot = B->w - A->w;
       lambda = -s.mass_scale * j->angular_mass * (cdot + s.bias_rate * f->angle)
                - s.impulse_scale * j->angular_impulse;
@@ -347,7 +353,7 @@ static void solve_weld (joint *j, solver_body *A, solver_body *B, const step_con
   if (j->tree)
     return;
   solve_angular (j, A, B, &f, ctx, use_bias);
-  solve_point (j, A, B, &f, j->enable_spring ? j->spring : rigid_soft (ctx, use_bias));
+  solve_point (j, A, B, &f, springy (j) ? j->spring : rigid_soft (ctx, use_bias));
 }
 
 /* The axial part of a prismatic or wheel joint: its spring, motor (the
@@ -360,7 +366,7 @@ static void solve_axial (joint *j, solver_body *A, solver_body *B, const frame *
   double mass = k > 0.0 ? 1.0 / k : 0.0;
   double translation = v2_dot (axis, f->d), lambda;
 #define AXIAL_SPEED() (v2_dot (axis, v2_sub (B->v, A->v)) + a2 * B->w - a1 * A->w)
-  if (j->enable_spring)
+  if (springy (j))
     {
       joint_soft s = j->spring;
       lambda = -s.mass_scale * mass * (AXIAL_SPEED () + s.bias_rate * translation) - s.impulse_scale * j->axial_impulse;
@@ -562,7 +568,7 @@ int32_t joint_row_count (const joint *j)
     case CAROM_JOINT_PRISMATIC:
       return 2;
     case CAROM_JOINT_WELD:
-      return j->enable_spring ? 0 : 3;
+      return springy (j) ? 0 : 3;
     case CAROM_JOINT_WHEEL:
       return 1;
     case CAROM_JOINT_DISTANCE:

@@ -844,7 +844,7 @@ class Joint:
     @property
     def anchors(self):
         """((ax, ay), (bx, by)): the anchors on a and on b now, in world
-        coordinates (mouse joint: b's grabbed point, then the target)."""
+        coordinates (mouse joint: the target, then b's grabbed point)."""
         v = [ctypes.c_double() for _ in range(4)]
         _check(_lib.carom_joint_get_anchors(self._h(), self._id, *(ctypes.byref(x) for x in v)),
                "anchors")

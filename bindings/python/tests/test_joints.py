@@ -178,10 +178,10 @@ def test_mouse_and_motor_joints_follow_their_targets():
         mouse = world.add_joint("mouse", b=box, x=1.25, y=1.0)  # grabbed at its right edge
         assert mouse.type == carom.JointType.MOUSE and mouse.bodies == (None, box)
         mouse.set_target(3.0, 2.0)
-        assert mouse.anchors == ((1.25, 1.0), (3.0, 2.0))  # b's point, then the target
+        assert mouse.anchors == ((3.0, 2.0), (1.25, 1.0))  # the target, then b's point
         for _ in range(240):
             world.step(1 / 60)
-        (px, py), target = mouse.anchors
+        target, (px, py) = mouse.anchors
         assert target == (3.0, 2.0)
         assert math.hypot(px - 3.0, py - 2.0) < 0.5  # soft (5 Hz), against gravity
         with pytest.raises(carom.CaromError) as err:

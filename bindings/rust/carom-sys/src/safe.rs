@@ -913,7 +913,7 @@ impl World {
     }
 
     /// The anchors on a and on b now, in world coordinates (a mouse
-    /// joint's: b's grabbed point, then the target).
+    /// joint's: the target, then b's grabbed point).
     pub fn joint_anchors(&self, id: carom_joint_id) -> Result<((f64, f64), (f64, f64))> {
         let (mut ax, mut ay, mut bx, mut by) = (0.0, 0.0, 0.0, 0.0);
         check(unsafe { carom_joint_get_anchors(self.as_ptr(), id, &mut ax, &mut ay, &mut bx, &mut by) })?;

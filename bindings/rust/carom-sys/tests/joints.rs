@@ -228,7 +228,7 @@ fn motors_limits_springs_and_targets() {
     let crate_ = world.add_box(&dynamic_at(1.0, 1.0), 0.5, 0.5).unwrap();
     let mouse = world.add_joint(&JointDef::mouse(crate_, (1.0, 1.0))).unwrap();
     world.set_joint_target(mouse, 3.0, 2.0, 0.0).unwrap();
-    assert_eq!(world.joint_anchors(mouse).unwrap(), ((1.0, 1.0), (3.0, 2.0)));
+    assert_eq!(world.joint_anchors(mouse).unwrap(), ((3.0, 2.0), (1.0, 1.0)));
     assert_eq!(world.set_joint_motor(mouse, true, 1.0, 1.0).unwrap_err().status, CAROM_ERR_BAD_ARGUMENT);
     let cube = world.add_box(&dynamic_at(-5.0, 0.0), 1.0, 1.0).unwrap();
     let drive = world
