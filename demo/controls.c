@@ -6,7 +6,9 @@
 #include <gdk/gdkkeysyms.h>
 #include <glib.h>
 
-/* Number keys 1-7 pick a scene from the table. */
+/* Number keys 1-9 and 0 pick a scene from the table, n and p the next and
+ * the previous one (wrapping round; from a file of the user's, the first
+ * and the last). */
 static controls_result controls_scene (demo *d, int index)
 {
   const scene_entry *e = scenes_get (index);
@@ -20,6 +22,16 @@ static controls_result controls_scene (demo *d, int index)
   return ok ? CONTROLS_SCENE : CONTROLS_HANDLED;
 }
 
+static controls_result controls_next_scene (demo *d, int step)
+{
+  int n = scenes_count (), i;
+  for (i = 0; i < n && scenes_get (i) != d->entry; ++i)
+    ;
+  if (i == n)
+    i = step > 0 ? -1 : 0; /* not a table scene */
+  return controls_scene (d, ((i + step) % n + n) % n);
+}
+
 controls_result controls_key (demo *d, unsigned keyval)
 {
   switch (keyval)
@@ -31,6 +43,11 @@ controls_result controls_key (demo *d, unsigned keyval)
     case GDK_KEY_5: case GDK_KEY_KP_5: return controls_scene (d, 4);
     case GDK_KEY_6: case GDK_KEY_KP_6: return controls_scene (d, 5);
     case GDK_KEY_7: case GDK_KEY_KP_7: return controls_scene (d, 6);
+    case GDK_KEY_8: case GDK_KEY_KP_8: return controls_scene (d, 7);
+    case GDK_KEY_9: case GDK_KEY_KP_9: return controls_scene (d, 8);
+    case GDK_KEY_0: case GDK_KEY_KP_0: return controls_scene (d, 9);
+    case GDK_KEY_n: case GDK_KEY_N: return controls_next_scene (d, 1);
+    case GDK_KEY_p: case GDK_KEY_P: return controls_next_scene (d, -1);
     case GDK_KEY_Up:
       demo_change_gravity (d, 0.0, DEMO_GRAVITY_STEP);
       break;
@@ -66,6 +83,9 @@ controls_result controls_key (demo *d, unsigned keyval)
     case GDK_KEY_c: case GDK_KEY_C:
       d->opt.show_contacts = !d->opt.show_contacts;
       break;
+    case GDK_KEY_j: case GDK_KEY_J:
+      d->opt.show_joints = !d->opt.show_joints;
+      break;
     case GDK_KEY_f: case GDK_KEY_F:
       demo_toggle_effect (d, CAROM_EFFECT_FRICTION);
       break;
@@ -94,23 +114,13 @@ controls_result controls_key (demo *d, unsigned keyval)
   return CONTROLS_HANDLED;
 }
 
-/* While paused nothing steps, so apply the grab and refresh the contacts
- * here for the picture to follow the mouse. */
-static void controls_follow (demo *d)
-{
-  if (!d->paused)
-    return;
-  grab_update (&d->grab, d->stage.world, demo_now ());
-  carom_world_detect (d->stage.world);
-}
-
 int controls_press (demo *d, double x, double y)
 {
   double wx, wy;
   if (!d->entry)
     return 0;
   render_to_world (&d->opt, x, y, &wx, &wy);
-  if (!grab_begin (&d->grab, d->stage.world, wx, wy, demo_now (), 2.0 * (d->opt.view_x1 - d->opt.view_x0)))
+  if (!grab_begin (&d->grab, d->stage.world, wx, wy, 2.0 * (d->opt.view_x1 - d->opt.view_x0)))
     return 0;
   if (d->verbose)
     {
@@ -120,15 +130,16 @@ int controls_press (demo *d, double x, double y)
   return 1;
 }
 
-/* Move a held body to the pointer at screen (x, y); 0 when nothing is
- * held. The pointer's world position goes to *wx, *wy. */
+/* Move the held body's target to the pointer at screen (x, y); 0 when
+ * nothing is held. The pointer's world position goes to *wx, *wy. While
+ * paused the body stays where it is (nothing steps) and the picture shows
+ * the joint's new pull. */
 static int controls_drag (demo *d, double x, double y, double *wx, double *wy)
 {
   if (!d->entry || d->grab.body == CAROM_NULL_BODY)
     return 0;
   render_to_world (&d->opt, x, y, wx, wy);
-  grab_move (&d->grab, *wx, *wy, demo_now ());
-  controls_follow (d);
+  grab_move (&d->grab, d->stage.world, *wx, *wy);
   return 1;
 }
 
@@ -145,9 +156,11 @@ int controls_release (demo *d, double x, double y)
     return 0;
   if (d->verbose)
     {
-      printf ("carom-demo: release at %.3f %.3f\n", wx, wy);
+      double px = wx, py = wy;
+      grab_point (&d->grab, d->stage.world, &px, &py);
+      printf ("carom-demo: release at %.3f %.3f, the grabbed point at %.3f %.3f\n", wx, wy, px, py);
       fflush (stdout);
     }
-  grab_end (&d->grab, d->stage.world, demo_now ());
+  grab_end (&d->grab, d->stage.world);
   return 1;
 }

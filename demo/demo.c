@@ -108,9 +108,11 @@ int demo_init (demo *d, const scene_entry *e, const char *path, int width, int h
 {
   memset (d, 0, sizeof *d);
   d->width = width, d->height = height;
-  /* as render_options_init: centroids and contacts shown, vectors hidden */
+  /* as render_options_init: centroids, contacts and joints shown, vectors
+   * hidden */
   d->opt.show_centroids = 1;
   d->opt.show_contacts = 1;
+  d->opt.show_joints = 1;
   grab_init (&d->grab);
   hud_init (&d->hud, demo_now ());
   return demo_load (d, e, path);
@@ -153,7 +155,7 @@ void demo_update (demo *d)
   carom_status s;
   if (!d->entry)
     return;
-  grab_update (&d->grab, d->stage.world, demo_now ());
+  grab_update (&d->grab, d->stage.world);
   s = d->entry->update (&d->stage, DEMO_DT);
   if (s != CAROM_OK)
     {

@@ -61,7 +61,7 @@ int demo_restart (demo *d);
 /* The drawing area is now width x height: fit the view, move the walls. */
 void demo_resize (demo *d, int width, int height);
 
-/* One timer tick's simulation step (pinning a held body first). */
+/* One timer tick's simulation step (checking a held body first). */
 void demo_update (demo *d);
 
 /* Paint a frame into width x height: world, overlays, status line. */

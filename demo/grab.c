@@ -1,18 +1,24 @@
 /* Mouse grab: picking with the library's point query (the true outline, so
- * concave polygons work), and throwing with the pointer's smoothed
- * velocity. */
+ * concave polygons work), holding with a mouse joint. */
 #include "grab.h"
 
 #include <math.h>
 #include <stdlib.h>
 
-/* A pointer that has not moved for this long is at rest. */
-#define GRAB_REST_TIME 0.06
+/* The joint's most force, in the body's weights (Box2D's testbed uses
+ * 1000 too): strong enough to lift anything quickly, bounded so a body
+ * pulled into a wall or held by other joints does not take an impulse the
+ * solver cannot balance. */
+#define GRAB_WEIGHTS 1000.0
+/* The weight is taken at this gravity at least, so a body can be moved in
+ * a world without gravity (m/s^2). */
+#define GRAB_MIN_GRAVITY 9.81
 
 void grab_init (grab *g)
 {
   g->body = CAROM_NULL_BODY;
-  g->lx = g->ly = g->mx = g->my = g->vx = g->vy = g->t = 0.0;
+  g->joint = CAROM_NULL_JOINT;
+  g->mx = g->my = 0.0;
   g->max_speed = HUGE_VAL;
 }
 
@@ -41,79 +47,76 @@ carom_body_id grab_pick (const carom_world *world, double x, double y)
   return found;
 }
 
-int grab_begin (grab *g, carom_world *world, double x, double y, double now, double max_speed)
+int grab_begin (grab *g, carom_world *world, double x, double y, double max_speed)
 {
-  double cx, cy, a = 0.0, dx, dy;
+  carom_joint_def def;
+  double mass = 0.0, gx = 0.0, gy = 0.0;
   carom_body_id id = grab_pick (world, x, y);
-  grab_init (g);
-  if (id == CAROM_NULL_BODY)
+  grab_end (g, world);
+  if (id == CAROM_NULL_BODY || carom_joint_def_init (&def, sizeof def) != CAROM_OK)
     return 0;
-  carom_body_get_position (world, id, &cx, &cy);
-  carom_body_get_angle (world, id, &a);
-  dx = x - cx, dy = y - cy;
+  carom_body_get_mass (world, id, &mass, NULL, NULL);
+  carom_world_get_gravity (world, &gx, &gy);
+  def.type = CAROM_JOINT_MOUSE;
+  def.a = CAROM_NULL_BODY;
+  def.b = id;
+  def.x = x, def.y = y;
+  /* hertz and damping_ratio 0: the joint's own 5 Hz and 0.7 */
+  def.max_motor_force = GRAB_WEIGHTS * mass * fmax (hypot (gx, gy), GRAB_MIN_GRAVITY);
+  if (!isfinite (def.max_motor_force) || def.max_motor_force > CAROM_MAX_MAGNITUDE)
+    def.max_motor_force = 0.0; /* no bound */
+  if (carom_world_add_joint (world, &def, &g->joint) != CAROM_OK)
+    return 0;
   g->body = id;
-  g->lx = cos (a) * dx + sin (a) * dy;
-  g->ly = -sin (a) * dx + cos (a) * dy;
   g->mx = x, g->my = y;
-  g->t = now;
   g->max_speed = max_speed > 0.0 ? max_speed : HUGE_VAL;
   return 1;
 }
 
-void grab_move (grab *g, double x, double y, double now)
+void grab_move (grab *g, carom_world *world, double x, double y)
 {
-  double dt = now - g->t;
   if (g->body == CAROM_NULL_BODY)
     return;
-  if (dt > 1e-4)
-    {
-      double k = dt > GRAB_REST_TIME ? 1.0 : 0.6; /* after a rest, start afresh */
-      g->vx = k * (x - g->mx) / dt + (1.0 - k) * g->vx;
-      g->vy = k * (y - g->my) / dt + (1.0 - k) * g->vy;
-      g->t = now;
-    }
   g->mx = x, g->my = y;
+  if (carom_joint_set_target (world, g->joint, x, y, 0.0) != CAROM_OK)
+    grab_init (g); /* the body and its joint are gone */
 }
 
-/* The pointer's velocity now: zero once it has rested, capped. */
-static void grab_velocity (const grab *g, double now, double *vx, double *vy)
+/* A throw is capped at max_speed, so a flick cannot send the body through
+ * a wall in one step. */
+static void grab_cap_speed (const grab *g, carom_world *world)
 {
-  double speed = hypot (g->vx, g->vy), k = 1.0;
-  if (now - g->t > GRAB_REST_TIME || !isfinite (speed))
-    {
-      *vx = *vy = 0.0;
-      return;
-    }
-  if (speed > g->max_speed)
-    k = g->max_speed / speed;
-  *vx = k * g->vx, *vy = k * g->vy;
+  double vx = 0.0, vy = 0.0, speed;
+  carom_body_get_velocity (world, g->body, &vx, &vy);
+  speed = hypot (vx, vy);
+  if (speed > g->max_speed && isfinite (speed))
+    carom_body_set_velocity (world, g->body, vx * g->max_speed / speed, vy * g->max_speed / speed);
 }
 
-void grab_update (grab *g, carom_world *world, double now)
+void grab_update (grab *g, carom_world *world)
 {
-  double a = 0.0, vx, vy;
   if (g->body == CAROM_NULL_BODY)
     return;
-  if (carom_body_check (world, g->body) != CAROM_OK)
+  if (carom_joint_check (world, g->joint) != CAROM_OK)
     {
       grab_init (g);
       return;
     }
-  carom_body_get_angle (world, g->body, &a);
-  grab_velocity (g, now, &vx, &vy);
-  carom_body_set_position (world, g->body, g->mx - (cos (a) * g->lx - sin (a) * g->ly),
-                           g->my - (sin (a) * g->lx + cos (a) * g->ly));
-  carom_body_set_velocity (world, g->body, vx, vy);
-  carom_body_set_spin (world, g->body, 0.0);
+  grab_cap_speed (g, world);
 }
 
-void grab_end (grab *g, carom_world *world, double now)
+int grab_point (const grab *g, const carom_world *world, double *x, double *y)
 {
-  double vx, vy;
-  if (g->body != CAROM_NULL_BODY && carom_body_check (world, g->body) == CAROM_OK)
+  /* a mouse joint's anchors: the target, then the body's point */
+  return g->body != CAROM_NULL_BODY && carom_joint_get_anchors (world, g->joint, NULL, NULL, x, y) == CAROM_OK;
+}
+
+void grab_end (grab *g, carom_world *world)
+{
+  if (g->body != CAROM_NULL_BODY && carom_joint_check (world, g->joint) == CAROM_OK)
     {
-      grab_velocity (g, now, &vx, &vy);
-      carom_body_set_velocity (world, g->body, vx, vy);
+      carom_world_remove_joint (world, g->joint);
+      grab_cap_speed (g, world);
     }
   grab_init (g);
 }

@@ -112,6 +112,8 @@ void hud_draw_status (cairo_t *cr, const hud *h, const hud_status *st, double y,
 
 static const char *const hud_help_lines[][2] = {
   { "1 ... 7", "scenes: thesis balls pyramid rain gas platform compound" },
+  { "8 9 0", "scenes: pendulum bridge ragdoll" },
+  { "n p", "next / previous scene (after 0: car)" },
   { "arrows", "change gravity" },
   { "g", "show the gravity vector" },
   { "+ - PgUp PgDn", "restitution up / down" },
@@ -119,6 +121,7 @@ static const char *const hud_help_lines[][2] = {
   { ".", "one step while paused" },
   { "v", "velocity arrows" },
   { "c", "contact points and normals" },
+  { "j", "joints: anchors and bodies' centres" },
   { "r", "restart the scene" },
   { "f", "friction on / off (world default 0.5)" },
   { "d", "damping on / off" },
@@ -127,7 +130,7 @@ static const char *const hud_help_lines[][2] = {
   { "t", "continuous collision on / off (no tunnelling)" },
   { "h", "this help" },
   { "q Esc", "quit" },
-  { "mouse", "drag a body, release to throw" },
+  { "mouse", "drag a body (a mouse joint), release to throw" },
 };
 
 void hud_draw_help (cairo_t *cr, double width, double height)

@@ -17,6 +17,8 @@
 /* Contact normals and the gravity arrow have a fixed length in pixels. */
 #define RENDER_NORMAL_PX 14.0
 #define RENDER_GRAVITY_PX 32.0
+/* A joint's pins: circles of this radius in pixels at most. */
+#define RENDER_PIN_PX 3.5
 
 typedef struct rgb {
   double r, g, b;
@@ -101,6 +103,7 @@ void render_options_init (render_options *opt, const carom_world *world, int wid
   opt->height = height;
   opt->show_contacts = 1;
   opt->show_centroids = 1;
+  opt->show_joints = 1;
   render_fit_view (opt, world);
 }
 
@@ -404,6 +407,101 @@ static void render_draw_circle (double x, double y, double r, double angle, caro
   cairo_stroke (p->cr);
 }
 
+/* A pin: a small ring at screen (x, y). */
+static void render_pin (cairo_t *cr, double x, double y, double r)
+{
+  cairo_new_sub_path (cr);
+  cairo_arc (cr, x, y, r, 0.0, 2.0 * RENDER_PI);
+  cairo_set_source_rgb (cr, 1.0, 1.0, 1.0);
+  cairo_fill_preserve (cr);
+  cairo_set_source_rgb (cr, 0.12, 0.16, 0.24);
+  cairo_stroke (cr);
+}
+
+/* A joint from the debug draw: xy holds a's centre, a's anchor, b's anchor
+ * and b's centre (a joint to the world: its fixed point twice; a mouse
+ * joint: its target twice). Thin lines from each anchor to its moving
+ * body's centre (a static body's anchor is a fixed point), a line between
+ * the anchors where they part (a distance joint's rod, a slider's travel),
+ * a ring at each anchor; the world's fixed point gets a small ground mark,
+ * and a mouse joint (the demo's grab) is an orange line from the body to
+ * the pointer. */
+static void render_draw_joint (carom_joint_type type, const double *xy, carom_joint_id id, void *user)
+{
+  const render_pass *p = user;
+  cairo_t *cr = p->cr;
+  double s[8], pin = fmin (RENDER_PIN_PX, fmax (1.5, 0.08 * p->scale));
+  carom_body_id a = CAROM_NULL_BODY, b = CAROM_NULL_BODY;
+  carom_body_type type_a = CAROM_STATIC, type_b = CAROM_STATIC; /* the world, or a body that cannot be read */
+  int k;
+  for (k = 0; k < 8; ++k)
+    if (!isfinite (xy[k]))
+      return;
+  for (k = 0; k < 4; ++k)
+    render_to_screen (p->opt, xy[2 * k], xy[2 * k + 1], &s[2 * k], &s[2 * k + 1]);
+  cairo_save (cr);
+  cairo_set_line_cap (cr, CAIRO_LINE_CAP_ROUND);
+  if (type == CAROM_JOINT_MOUSE)
+    {
+      static const double dash[2] = { 5.0, 3.0 };
+      cairo_set_source_rgba (cr, 1.0, 0.55, 0.0, 0.95);
+      cairo_set_line_width (cr, 2.0);
+      cairo_set_dash (cr, dash, 2, 0.0);
+      cairo_move_to (cr, s[4], s[5]);
+      cairo_line_to (cr, s[2], s[3]);
+      cairo_stroke (cr);
+      cairo_set_dash (cr, NULL, 0, 0.0);
+      cairo_new_sub_path (cr);
+      cairo_arc (cr, s[2], s[3], pin + 1.5, 0.0, 2.0 * RENDER_PI);
+      cairo_stroke (cr);
+      cairo_new_sub_path (cr);
+      cairo_arc (cr, s[4], s[5], 0.7 * pin, 0.0, 2.0 * RENDER_PI);
+      cairo_fill (cr);
+      cairo_restore (cr);
+      return;
+    }
+  carom_joint_get_bodies (p->world, id, NULL, &a, &b);
+  carom_body_get_type (p->world, a, &type_a);
+  carom_body_get_type (p->world, b, &type_b);
+  cairo_set_source_rgba (cr, 0.12, 0.16, 0.24, 0.75);
+  cairo_set_line_width (cr, 1.0);
+  if (type_a != CAROM_STATIC)
+    {
+      cairo_move_to (cr, s[0], s[1]);
+      cairo_line_to (cr, s[2], s[3]);
+    }
+  if (type_b != CAROM_STATIC)
+    {
+      cairo_move_to (cr, s[6], s[7]);
+      cairo_line_to (cr, s[4], s[5]);
+    }
+  cairo_stroke (cr);
+  if (hypot (s[4] - s[2], s[5] - s[3]) > 0.5)
+    {
+      cairo_set_source_rgba (cr, 0.12, 0.16, 0.24, 0.9);
+      cairo_set_line_width (cr, type == CAROM_JOINT_DISTANCE ? 2.0 : 1.0);
+      cairo_move_to (cr, s[2], s[3]);
+      cairo_line_to (cr, s[4], s[5]);
+      cairo_stroke (cr);
+    }
+  if (a == CAROM_NULL_BODY)
+    {
+      /* the world: a small triangle under the fixed point */
+      double h = 2.2 * pin;
+      cairo_set_source_rgba (cr, 0.12, 0.16, 0.24, 0.85);
+      cairo_move_to (cr, s[2], s[3]);
+      cairo_line_to (cr, s[2] - h, s[3] + 1.6 * h);
+      cairo_line_to (cr, s[2] + h, s[3] + 1.6 * h);
+      cairo_close_path (cr);
+      cairo_fill (cr);
+    }
+  cairo_set_line_width (cr, 1.2);
+  render_pin (cr, s[2], s[3], pin);
+  if (hypot (s[4] - s[2], s[5] - s[3]) > 0.5)
+    render_pin (cr, s[4], s[5], pin);
+  cairo_restore (cr);
+}
+
 static void render_bodies_drawn (cairo_t *cr, const render_options *opt, const carom_world *world, double scale,
                                  double line)
 {
@@ -414,10 +512,15 @@ static void render_bodies_drawn (cairo_t *cr, const render_options *opt, const c
   pass.cr = cr, pass.opt = opt, pass.world = world, pass.scale = scale, pass.line = line;
   draw.polygon = render_draw_polygon;
   draw.circle = render_draw_circle;
+  draw.joint = render_draw_joint;
   draw.user = &pass;
   draw.draw_contacts = 0; /* drawn by render_contacts, at a fixed size on screen */
   for (pass.statics = 1; pass.statics >= 0; --pass.statics)
-    carom_world_draw (world, &draw);
+    {
+      /* the joints once, over every body */
+      draw.draw_joints = !pass.statics && opt->show_joints;
+      carom_world_draw (world, &draw);
+    }
 }
 
 static void render_highlight (cairo_t *cr, const render_options *opt, const carom_world *world, double **xy,

@@ -16,14 +16,15 @@ typedef struct render_options {
   int show_centroids;       /* centre-of-mass dots */
   int show_gravity;         /* gravity vector */
   int show_restitution;     /* restitution bar */
+  int show_joints;          /* joints: their anchors and bodies' centres */
   int highlight_body_valid; /* draw `highlight` body outlined (mouse grab) */
   carom_body_id highlight;
   const carom_body_id *lit; /* sensors drawn lit: something is inside */
   int lit_count;
 } render_options;
 
-/* Defaults: everything fitted to the world's bodies, centroids and contacts
- * shown, vectors hidden. */
+/* Defaults: everything fitted to the world's bodies, centroids, contacts
+ * and joints shown, vectors hidden. */
 void render_options_init (render_options *opt, const carom_world *world, int width, int height);
 
 /* Fit view_* to the bounding box of all bodies with a small margin, keeping
@@ -31,7 +32,7 @@ void render_options_init (render_options *opt, const carom_world *world, int wid
 void render_fit_view (render_options *opt, const carom_world *world);
 
 /* Paint the world: background, bodies filled in their own colour (statics
- * grey), outlines, then the overlays asked for. */
+ * grey), outlines, joints, then the overlays asked for. */
 void render_world (cairo_t *cr, const carom_world *world, const render_options *opt);
 
 /* Map between screen pixels and world coordinates under `opt`. */

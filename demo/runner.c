@@ -34,8 +34,9 @@ static const char runner_usage[] =
   "  --svg OUT.svg   draw the final frame as SVG\n"
   "  --width PX      picture width (default 800); the height follows the scene\n"
   "\n"
-  "output keys: bodies steps dt ms_per_step energy_start energy_end kinetic_start\n"
-  "kinetic_end momentum_x momentum_y angular_momentum max_penetration contacts nan\n"
+  "output keys: bodies joints steps dt ms_per_step energy_start energy_end\n"
+  "kinetic_start kinetic_end momentum_x momentum_y angular_momentum max_penetration\n"
+  "contacts nan effects\n"
   "(energy = kinetic + gravitational potential; see docs/scenes.md)\n";
 
 typedef struct runner_args {
@@ -427,7 +428,7 @@ static int runner_run (const runner_args *a)
     {
       char effects[160] = "";
       uint32_t mask = carom_world_get_effects (w), bit;
-      for (bit = 1; bit && bit <= CAROM_EFFECT_SLEEPING; bit <<= 1)
+      for (bit = 1; bit; bit <<= 1)
         if ((mask & bit) && carom_effect_name ((carom_effect) bit))
           {
             if (effects[0])
@@ -435,13 +436,13 @@ static int runner_run (const runner_args *a)
             strcat (effects, carom_effect_name ((carom_effect) bit));
           }
       runner_totals_of (w, ids, n, &end);
-      printf ("bodies=%ld steps=%ld dt=%.17g ms_per_step=%.6f energy_start=%.17g energy_end=%.17g "
+      printf ("bodies=%ld joints=%ld steps=%ld dt=%.17g ms_per_step=%.6f energy_start=%.17g energy_end=%.17g "
               "kinetic_start=%.17g kinetic_end=%.17g momentum_x=%.17g momentum_y=%.17g angular_momentum=%.17g "
               "max_penetration=%.17g contacts=%ld nan=%d effects=%s\n",
-              (long) n, a->steps, a->dt, a->steps ? 1e3 * seconds / (double) a->steps : 0.0,
-              start.kinetic + start.potential, end.kinetic + end.potential, start.kinetic, end.kinetic, end.px,
-              end.py, end.l, deepest, (long) carom_world_contact_count (w), end.finite ? 0 : 1,
-              effects[0] ? effects : "none");
+              (long) n, (long) carom_world_joint_count (w), a->steps, a->dt,
+              a->steps ? 1e3 * seconds / (double) a->steps : 0.0, start.kinetic + start.potential,
+              end.kinetic + end.potential, start.kinetic, end.kinetic, end.px, end.py, end.l, deepest,
+              (long) carom_world_contact_count (w), end.finite ? 0 : 1, effects[0] ? effects : "none");
       fflush (stdout);
       if (a->png && runner_draw (a, w, a->png, 0))
         rc = 1;

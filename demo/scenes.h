@@ -1,6 +1,7 @@
 /* The demo's scene table, in the manner of Chipmunk's demo list: a name,
  * the scene file and the lifecycle (init, update, draw, destroy) the main
- * loop calls. Number keys 1-7 pick the entries in order. */
+ * loop calls. Number keys 1-9 and 0 pick the first ten entries in order,
+ * n and p step through all of them. */
 #ifndef CAROM_DEMO_SCENES_H
 #define CAROM_DEMO_SCENES_H
 

@@ -1,11 +1,14 @@
 /* Scene files: a line-oriented text format (docs/scenes.md) loaded into a new
  * world. The text is read twice. The first pass checks every line and
  * collects the world settings, which carom_world_init needs before any body
- * exists; the second creates the world and adds the bodies. The first pass
- * already catches every error a well-formed world can report, so the first
- * error by line order is the one reported, and a failure in the second pass
- * (out of memory, too many bodies) destroys the half-built world: a caller
- * never sees part of a scene. */
+ * exists, the bodies' names and the joints; the second creates the world
+ * and adds the bodies, then the joints, which may name bodies of later
+ * lines. The first pass already catches every error a well-formed world can
+ * report, so the first error by line order is the one reported (a joint's
+ * names are resolved once the whole file is read: what depends on them is
+ * reported after every other line), and a failure in the second pass (out
+ * of memory, too many bodies) destroys the half-built world: a caller never
+ * sees part of a scene. */
 #include "alloc.h"
 #include "carom.h"
 #include "def.h"
@@ -35,7 +38,8 @@ enum {
   OPT_SENSOR = 1u << 11,
   OPT_CATEGORY = 1u << 12,
   OPT_MASK = 1u << 13,
-  OPT_GROUP = 1u << 14
+  OPT_GROUP = 1u << 14,
+  OPT_NAME = 1u << 15
 };
 #define OPT_MATERIAL (OPT_RESTITUTION | OPT_FRICTION)
 /* a shape inside a compound: where it sits in the body, its density and
@@ -43,11 +47,11 @@ enum {
 #define OPT_PART (OPT_AT | OPT_ANGLE | OPT_DENSITY | OPT_MATERIAL)
 #define OPT_BODY                                                                                                       \
   (OPT_AT | OPT_ANGLE | OPT_VELOCITY | OPT_SPIN | OPT_DENSITY | OPT_MATERIAL | OPT_STATIC | OPT_FIXED | OPT_BULLET     \
-   | OPT_KINEMATIC | OPT_SENSOR | OPT_CATEGORY | OPT_MASK | OPT_GROUP)
+   | OPT_KINEMATIC | OPT_SENSOR | OPT_CATEGORY | OPT_MASK | OPT_GROUP | OPT_NAME)
 
 typedef struct scene_option {
   const char *word;
-  int count; /* numbers that follow the word */
+  int count; /* numbers that follow the word; -1: one word (a name) */
   unsigned bit;
 } scene_option;
 
@@ -67,7 +71,90 @@ static const scene_option scene_options[] = {
   { "category", 1, OPT_CATEGORY },
   { "mask", 1, OPT_MASK },
   { "group", 1, OPT_GROUP },
+  { "name", -1, OPT_NAME },
 };
+
+/* Joint options, as bits too, and the kinds of joint with the options each
+ * takes and needs. */
+enum {
+  JOPT_AT = 1u << 0,
+  JOPT_TO = 1u << 1,
+  JOPT_AXIS = 1u << 2,
+  JOPT_LIMIT = 1u << 3,
+  JOPT_MOTOR = 1u << 4,
+  JOPT_SPRING = 1u << 5,
+  JOPT_LENGTH = 1u << 6,
+  JOPT_FORCE = 1u << 7,
+  JOPT_TORQUE = 1u << 8,
+  JOPT_COLLIDE = 1u << 9
+};
+
+static const scene_option scene_joint_options[] = {
+  { "at", 2, JOPT_AT },
+  { "to", 2, JOPT_TO },
+  { "axis", 2, JOPT_AXIS },
+  { "limit", 2, JOPT_LIMIT },
+  { "motor", 2, JOPT_MOTOR },
+  { "spring", 2, JOPT_SPRING },
+  { "length", 1, JOPT_LENGTH },
+  { "force", 1, JOPT_FORCE },
+  { "torque", 1, JOPT_TORQUE },
+  { "collide", 0, JOPT_COLLIDE },
+};
+
+typedef struct scene_joint_kind {
+  const char *word;
+  carom_joint_type type;
+  int32_t bodies;       /* names after the word: A and B, or B alone */
+  unsigned needs, options;
+  const char *usage;
+} scene_joint_kind;
+
+static const scene_joint_kind scene_joint_kinds[] = {
+  { "revolute", CAROM_JOINT_REVOLUTE, 2, JOPT_AT, JOPT_AT | JOPT_LIMIT | JOPT_MOTOR | JOPT_SPRING | JOPT_COLLIDE,
+    "joint revolute A B at X Y [limit LOWER UPPER] [motor SPEED MAX_TORQUE] [spring HZ DAMPING] [collide]" },
+  { "prismatic", CAROM_JOINT_PRISMATIC, 2, JOPT_AT | JOPT_AXIS,
+    JOPT_AT | JOPT_AXIS | JOPT_LIMIT | JOPT_MOTOR | JOPT_SPRING | JOPT_COLLIDE,
+    "joint prismatic A B at X Y axis AX AY [limit L U] [motor SPEED MAX_FORCE] [spring HZ DAMPING] [collide]" },
+  { "wheel", CAROM_JOINT_WHEEL, 2, JOPT_AT | JOPT_AXIS,
+    JOPT_AT | JOPT_AXIS | JOPT_LIMIT | JOPT_MOTOR | JOPT_SPRING | JOPT_COLLIDE,
+    "joint wheel A B at X Y axis AX AY [limit L U] [motor SPEED MAX_TORQUE] [spring HZ DAMPING] [collide]" },
+  { "distance", CAROM_JOINT_DISTANCE, 2, JOPT_AT | JOPT_TO,
+    JOPT_AT | JOPT_TO | JOPT_LENGTH | JOPT_LIMIT | JOPT_SPRING | JOPT_MOTOR | JOPT_COLLIDE,
+    "joint distance A B at X Y to X2 Y2 [length L] [limit MIN MAX] [spring HZ DAMPING] [motor SPEED MAX_FORCE] "
+    "[collide]" },
+  { "weld", CAROM_JOINT_WELD, 2, JOPT_AT, JOPT_AT | JOPT_SPRING | JOPT_COLLIDE,
+    "joint weld A B at X Y [spring HZ DAMPING] [collide]" },
+  { "motor", CAROM_JOINT_MOTOR, 2, 0, JOPT_FORCE | JOPT_TORQUE | JOPT_COLLIDE,
+    "joint motor A B [force MAX_FORCE] [torque MAX_TORQUE] [collide]" },
+  { "mouse", CAROM_JOINT_MOUSE, 1, JOPT_AT, JOPT_AT | JOPT_FORCE | JOPT_SPRING,
+    "joint mouse B at X Y [force MAX_FORCE] [spring HZ DAMPING]" },
+};
+
+/* The word that names the world (a fixed point) where a joint names a
+ * body; no body may be called so. */
+#define SCENE_WORLD "world"
+
+/* A body's name: where its text is, the line that gave it, the body's type
+ * and, once made, its id; `stub` is a body of the same type in the trial
+ * world, for checking the joints that name it. */
+typedef struct scene_name {
+  int32_t text;
+  int32_t line;
+  carom_body_type type;
+  carom_body_id id, stub;
+} scene_name;
+
+/* A joint line, kept from the first pass: its def without the bodies, the
+ * names it gives for a and b (text offsets, -1 for the world) and, once
+ * resolved, their entries in the name table (-1 for the world). */
+typedef struct scene_joint {
+  int32_t line;
+  const scene_joint_kind *kind;
+  carom_joint_def def;
+  int32_t ref[2];
+  int32_t entry[2];
+} scene_joint;
 
 typedef struct scene_parser {
   carom_allocator allocator; /* the caller's, from def: all scratch memory */
@@ -111,12 +198,33 @@ typedef struct scene_parser {
   int continuous;            /* `continuous 1|0`, or -1 when not given */
   uint32_t named_effects;    /* named by `effects`: must end up active */
   int32_t effects_line;
+
+  /* body names: the table, open addressing over their text (slot: entry
+   * + 1, 0 empty; slot_cap a power of two), the text of every name and
+   * joint reference, NUL-terminated; the line's name (its token and entry)
+   * and the open compound's entry */
+  scene_name *names;
+  int32_t name_count, name_cap;
+  int32_t *slots;
+  int32_t slot_cap;
+  char *text;
+  int32_t text_len, text_cap;
+  const char *name;
+  int32_t name_entry;
+  int32_t compound_name;
+
+  /* the joint lines, made after the bodies; two dynamic bodies in the
+   * trial world for each line's own check (0 until made) */
+  scene_joint *joints;
+  int32_t joint_count, joint_cap;
+  carom_body_id trial_pair[2];
 } scene_parser;
 
 /* When a statement's handler runs: settings fill p->def in the first pass
- * only (the world is created from them); the others run in both passes and
- * add bodies in the second, when p->world is set. */
-typedef enum scene_kind { SCENE_SETTING, SCENE_BODY } scene_kind;
+ * only (the world is created from them), joints are checked and kept in the
+ * first pass only (they are made once every body exists); the others run in
+ * both passes and add bodies in the second, when p->world is set. */
+typedef enum scene_kind { SCENE_SETTING, SCENE_BODY, SCENE_JOINT } scene_kind;
 
 /* One statement: its word, the numbers that follow (max_numbers < 0: any
  * count), the options it accepts after them, and the handler. A statement
@@ -304,6 +412,150 @@ static carom_status scene_friction (scene_parser *p, double mu)
   return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "%s: friction must be 0 or more, got %g", p->tok[0], mu);
 }
 
+/* The option `word` of a table, or NULL. */
+static const scene_option *scene_lookup_option (const scene_option *table, size_t count, const char *word)
+{
+  size_t i;
+  for (i = 0; i < count; ++i)
+    if (strcmp (word, table[i].word) == 0)
+      return &table[i];
+  return NULL;
+}
+
+static const scene_option *scene_find_option (const char *word)
+{
+  return scene_lookup_option (scene_options, sizeof scene_options / sizeof scene_options[0], word);
+}
+
+/* ----------------------------------------------------------------- names */
+
+/* A body's name: a letter or '_', then letters, digits, '_' or '-'. */
+static int scene_is_name_char (char c, int first)
+{
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || (!first && (scene_is_digit (c) || c == '-'));
+}
+
+static int scene_is_name (const char *s)
+{
+  if (!scene_is_name_char (*s, 1))
+    return 0;
+  while (*++s)
+    if (!scene_is_name_char (*s, 0))
+      return 0;
+  return 1;
+}
+
+/* A token where a line wants a body's name (`what` is the statement). */
+static carom_status scene_check_name (scene_parser *p, const char *what, const char *name)
+{
+  if (!name)
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: option 'name' needs a name", what);
+  if (strcmp (name, SCENE_WORLD) == 0)
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: '%s' cannot name a body (in a joint it is the world itself)",
+                       what, name);
+  if (!scene_is_name (name))
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX,
+                       "%s: '%s' is not a name (a letter or '_', then letters, digits, '_' or '-')", what, name);
+  return CAROM_OK;
+}
+
+/* FNV-1a, for the name table */
+static uint32_t scene_hash (const char *s)
+{
+  uint32_t h = 2166136261u;
+  for (; *s; ++s)
+    h = (h ^ (unsigned char) *s) * 16777619u;
+  return h;
+}
+
+/* Keep a NUL-terminated copy of `s` in p->text; its offset in *at. */
+static carom_status scene_keep_text (scene_parser *p, const char *s, int32_t *at)
+{
+  size_t len = strlen (s) + 1;
+  if (len > (size_t) (INT32_MAX - p->text_len)
+      || !mem_reserve (&p->allocator, (void **) &p->text, &p->text_cap, p->text_len + (int32_t) len, 1))
+    return scene_fail (p, CAROM_ERR_OUT_OF_MEMORY, "out of memory");
+  memcpy (p->text + p->text_len, s, len);
+  *at = p->text_len;
+  p->text_len += (int32_t) len;
+  return CAROM_OK;
+}
+
+/* The entry of the body named `s`, or -1. */
+static int32_t scene_name_find (const scene_parser *p, const char *s)
+{
+  uint32_t mask = (uint32_t) p->slot_cap - 1, i;
+  if (p->slot_cap == 0)
+    return -1;
+  for (i = scene_hash (s) & mask; p->slots[i]; i = (i + 1) & mask)
+    if (strcmp (p->text + p->names[p->slots[i] - 1].text, s) == 0)
+      return p->slots[i] - 1;
+  return -1;
+}
+
+/* Room for one more name, the table at most half full; 0 when out of
+ * memory. */
+static int scene_name_room (scene_parser *p)
+{
+  int32_t cap, i, *slots;
+  if (!mem_reserve (&p->allocator, (void **) &p->names, &p->name_cap, p->name_count + 1, sizeof *p->names))
+    return 0;
+  if (2 * (p->name_count + 1) <= p->slot_cap)
+    return 1;
+  if (p->slot_cap > INT32_MAX / 4)
+    return 0;
+  cap = p->slot_cap ? 2 * p->slot_cap : 64;
+  slots = mem_alloc (&p->allocator, (size_t) cap * sizeof *slots);
+  if (!slots)
+    return 0;
+  memset (slots, 0, (size_t) cap * sizeof *slots);
+  for (i = 0; i < p->name_count; ++i)
+    {
+      uint32_t k = scene_hash (p->text + p->names[i].text) & (uint32_t) (cap - 1);
+      while (slots[k])
+        k = (k + 1) & (uint32_t) (cap - 1);
+      slots[k] = i + 1;
+    }
+  mem_free (&p->allocator, p->slots, (size_t) p->slot_cap * sizeof *p->slots);
+  p->slots = slots;
+  p->slot_cap = cap;
+  return 1;
+}
+
+/* The line's `name` (p->name), its options read: in the first pass a new
+ * entry (a name given before is an error), in the second the entry that
+ * gets the body's id (p->name_entry). */
+static carom_status scene_name_line (scene_parser *p, const char *what)
+{
+  int32_t found = scene_name_find (p, p->name);
+  scene_name *e;
+  uint32_t k, mask;
+  carom_status s;
+  if (p->world)
+    {
+      p->name_entry = found;
+      return CAROM_OK;
+    }
+  if (found >= 0)
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: the name '%s' is already the body of line %ld", what, p->name,
+                       (long) p->names[found].line);
+  if (!scene_name_room (p))
+    return scene_fail (p, CAROM_ERR_OUT_OF_MEMORY, "out of memory");
+  e = &p->names[p->name_count];
+  s = scene_keep_text (p, p->name, &e->text);
+  if (s != CAROM_OK)
+    return s;
+  e->line = p->line;
+  e->type = p->body.type;
+  e->id = e->stub = CAROM_NULL_BODY;
+  mask = (uint32_t) p->slot_cap - 1;
+  for (k = scene_hash (p->name) & mask; p->slots[k]; k = (k + 1) & mask)
+    ;
+  p->slots[k] = p->name_count + 1;
+  p->name_entry = p->name_count++;
+  return CAROM_OK;
+}
+
 /* ------------------------------------------------------------- handlers */
 
 static carom_status scene_do_gravity (scene_parser *p)
@@ -339,13 +591,16 @@ static carom_status scene_do_iterations (scene_parser *p)
   return scene_count (p, p->num[0], "N", 1, INT32_MAX, CAROM_ERR_BAD_ARGUMENT, &p->def.iterations);
 }
 
-/* Name the line's body in an error from the world (second pass only). */
+/* Name the line's body in an error from the world, apply what the body def
+ * does not hold and remember a named body's id (second pass only). */
 static carom_status scene_added (scene_parser *p, carom_status s)
 {
   if (s == CAROM_OK && (p->opts & OPT_FIXED))
     s = carom_body_set_fixed_rotation (p->world, p->last, 1);
   if (s == CAROM_OK && (p->opts & OPT_BULLET))
     s = carom_body_set_bullet (p->world, p->last, 1);
+  if (s == CAROM_OK && p->name_entry >= 0)
+    p->names[p->name_entry].id = p->last; /* for the joints that name it */
   if (s == CAROM_OK)
     return s;
   return scene_fail (p, s, "%s: %s", p->tok[0], carom_status_string (s));
@@ -470,6 +725,7 @@ static carom_status scene_do_compound (scene_parser *p)
   p->compound_line = p->line;
   p->compound = p->body;
   p->compound_opts = p->opts;
+  p->compound_name = p->name_entry;
   p->part_count = p->xy_count = 0;
   return CAROM_OK;
 }
@@ -585,6 +841,7 @@ static carom_status scene_do_end (scene_parser *p)
     return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "end: the compound of line %ld has no shapes",
                        (long) p->compound_line);
   p->opts = p->compound_opts;
+  p->name_entry = p->compound_name;
   if (!p->world)
     {
       s = scene_try_compound (p, 0, p->part_count);
@@ -597,6 +854,247 @@ static carom_status scene_do_end (scene_parser *p)
   if (s != CAROM_OK)
     return scene_fail (p, s, "end: the compound of line %ld: %s", (long) p->compound_line, carom_status_string (s));
   return scene_added (p, s);
+}
+
+/* ---------------------------------------------------------------- joints */
+
+/* A body of `type` in the trial world (made once, into *id), for checking
+ * the joints that name a body of that type. */
+static carom_status scene_trial_body (scene_parser *p, carom_body_type type, carom_body_id *id)
+{
+  carom_body_def d;
+  carom_status s;
+  if (*id != CAROM_NULL_BODY)
+    return CAROM_OK;
+  if (!p->trial)
+    {
+      s = carom_world_init (&p->trial, &p->def);
+      if (s != CAROM_OK)
+        return s;
+    }
+  carom_body_def_init (&d, sizeof d);
+  d.type = type;
+  return carom_world_add_circle (p->trial, &d, 1.0, id);
+}
+
+/* The world's verdict on the joint between trial bodies a (or the world)
+ * and b; the joint is removed again. */
+static carom_status scene_try_joint (scene_parser *p, const scene_joint *j, carom_body_id a, carom_body_id b)
+{
+  carom_joint_def d = j->def;
+  carom_joint_id id;
+  carom_status s;
+  d.a = a, d.b = b;
+  s = carom_world_add_joint (p->trial, &d, &id);
+  if (s == CAROM_OK)
+    carom_world_remove_joint (p->trial, id);
+  return s;
+}
+
+/* A joint's error, from the world's status `s`, in words: what in the line
+ * the world refused (the checks of carom_world_add_joint, in its order). */
+static carom_status scene_joint_fail (scene_parser *p, const scene_joint *j, carom_status s)
+{
+  const carom_joint_def *d = &j->def;
+  const char *what = j->kind->word;
+  const double values[] = { d->x, d->y, d->x2, d->y2, d->axis_x, d->axis_y, d->lower, d->upper, d->motor_speed,
+                            d->max_motor_force, d->hertz, d->damping_ratio, d->length, d->max_motor_torque };
+  size_t i;
+  if (s == CAROM_ERR_STATIC_BODY && j->ref[0] < 0)
+    return scene_fail (p, s, "joint %s: '%s' is not a dynamic body", what, p->text + j->ref[1]);
+  if (s == CAROM_ERR_STATIC_BODY)
+    return scene_fail (p, s, "joint %s: neither '%s' nor '%s' is a dynamic body", what, p->text + j->ref[0],
+                       p->text + j->ref[1]);
+  if (s != CAROM_ERR_BAD_ARGUMENT)
+    return scene_fail (p, s, "joint %s: %s", what, carom_status_string (s));
+  for (i = 0; i < sizeof values / sizeof values[0]; ++i)
+    if (fabs (values[i]) > CAROM_MAX_MAGNITUDE)
+      return scene_fail (p, s, "joint %s: numbers must not exceed %g", what, CAROM_MAX_MAGNITUDE);
+  if (d->enable_limit && d->lower > d->upper)
+    return scene_fail (p, s, "joint %s: the limit's lower end %g is above its upper end %g", what, d->lower, d->upper);
+  if (d->max_motor_force < 0.0 || d->max_motor_torque < 0.0)
+    return scene_fail (p, s, "joint %s: a force or torque must be 0 or more", what);
+  if (d->hertz < 0.0 || d->damping_ratio < 0.0)
+    return scene_fail (p, s, "joint %s: a spring's frequency and damping ratio must be 0 or more", what);
+  if ((d->type == CAROM_JOINT_PRISMATIC || d->type == CAROM_JOINT_WHEEL) && d->axis_x == 0.0 && d->axis_y == 0.0)
+    return scene_fail (p, s, "joint %s: the axis must not be zero", what);
+  if (d->type == CAROM_JOINT_DISTANCE && d->length == 0.0)
+    return scene_fail (p, s, "joint %s: the anchors coincide: give a length", what);
+  return scene_fail (p, s, "joint %s: %s", what, carom_status_string (s));
+}
+
+/* `joint KIND A B [options]` (mouse: `joint mouse B ...`): its def from the
+ * line, checked between two dynamic trial bodies, so what the line alone
+ * gets wrong is reported on it; kept for the end of the first pass, which
+ * resolves the names, and the end of the second, which makes it. */
+static carom_status scene_do_joint (scene_parser *p)
+{
+  const scene_joint_kind *kind = NULL;
+  scene_joint j;
+  unsigned given = 0;
+  int32_t i, n;
+  size_t k;
+  carom_status s;
+  if (p->tok_count < 2)
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX,
+                       "joint: which joint? (revolute, prismatic, wheel, distance, weld, motor or mouse)");
+  for (k = 0; k < sizeof scene_joint_kinds / sizeof scene_joint_kinds[0]; ++k)
+    if (strcmp (p->tok[1], scene_joint_kinds[k].word) == 0)
+      kind = &scene_joint_kinds[k];
+  if (!kind)
+    return scene_fail (p, CAROM_ERR_SCENE_SYNTAX,
+                       "joint: unknown joint '%s' (revolute, prismatic, wheel, distance, weld, motor or mouse)",
+                       p->tok[1]);
+  memset (&j, 0, sizeof j);
+  carom_joint_def_init (&j.def, sizeof j.def);
+  j.def.type = kind->type;
+  j.line = p->line;
+  j.kind = kind;
+  j.ref[0] = j.ref[1] = -1;
+
+  /* the bodies: A and B, or B alone; `world` only as A */
+  for (i = 2, n = 0; n < kind->bodies; ++n, ++i)
+    {
+      int32_t side = kind->bodies == 2 ? n : 1;
+      const char *name = i < p->tok_count ? p->tok[i] : NULL;
+      if (!name || scene_looks_numeric (name))
+        return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "joint %s: expected %s, got %s%s%s (usage: %s)", kind->word,
+                           kind->bodies == 2 ? "the names of two bodies" : "the name of a body", name ? "'" : "",
+                           name ? name : "nothing", name ? "'" : "", kind->usage);
+      if (strcmp (name, SCENE_WORLD) == 0 && side == 1)
+        return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "joint %s: B must be a body, not '%s'%s (usage: %s)", kind->word,
+                           SCENE_WORLD, kind->bodies == 2 ? " (the world can only be A)" : "", kind->usage);
+      if (strcmp (name, SCENE_WORLD) == 0)
+        continue;
+      if (!scene_is_name (name))
+        return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "joint %s: '%s' is not a body's name", kind->word, name);
+      s = scene_keep_text (p, name, &j.ref[side]);
+      if (s != CAROM_OK)
+        return s;
+    }
+  if (j.ref[0] >= 0 && strcmp (p->text + j.ref[0], p->text + j.ref[1]) == 0)
+    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "joint %s: '%s' cannot be joined to itself", kind->word,
+                       p->text + j.ref[0]);
+
+  /* the options, each at most once, in any order */
+  while (i < p->tok_count)
+    {
+      const char *word = p->tok[i++];
+      const scene_option *opt
+        = scene_lookup_option (scene_joint_options, sizeof scene_joint_options / sizeof scene_joint_options[0], word);
+      double v[2] = { 0.0, 0.0 };
+      int c;
+      if (scene_looks_numeric (word))
+        return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "joint %s: unexpected number '%s' (usage: %s)", kind->word, word,
+                           kind->usage);
+      if (!opt || !(opt->bit & kind->options))
+        return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "joint %s: unknown option '%s' (usage: %s)", kind->word, word,
+                           kind->usage);
+      if (given & opt->bit)
+        return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "joint %s: option '%s' given twice", kind->word, word);
+      given |= opt->bit;
+      for (c = 0; c < opt->count; ++c)
+        {
+          if (i >= p->tok_count || !scene_looks_numeric (p->tok[i]))
+            return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "joint %s: option '%s' needs %d number%s", kind->word, word,
+                               opt->count, opt->count > 1 ? "s" : "");
+          s = scene_number (p, p->tok[i++], &v[c]);
+          if (s != CAROM_OK)
+            return s;
+        }
+      switch (opt->bit)
+        {
+        case JOPT_AT: j.def.x = v[0], j.def.y = v[1]; break;
+        case JOPT_TO: j.def.x2 = v[0], j.def.y2 = v[1]; break;
+        case JOPT_AXIS: j.def.axis_x = v[0], j.def.axis_y = v[1]; break;
+        case JOPT_LIMIT: j.def.enable_limit = 1, j.def.lower = v[0], j.def.upper = v[1]; break;
+        case JOPT_MOTOR: j.def.enable_motor = 1, j.def.motor_speed = v[0], j.def.max_motor_force = v[1]; break;
+        case JOPT_SPRING: j.def.enable_spring = 1, j.def.hertz = v[0], j.def.damping_ratio = v[1]; break;
+        case JOPT_LENGTH:
+          if (!(v[0] > 0.0))
+            return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "joint %s: length must be positive, got %g", kind->word,
+                               v[0]);
+          j.def.length = v[0];
+          break;
+        case JOPT_FORCE: j.def.max_motor_force = v[0]; break;
+        case JOPT_TORQUE: j.def.max_motor_torque = v[0]; break;
+        case JOPT_COLLIDE: j.def.collide_connected = 1; break;
+        }
+    }
+  for (k = 0; k < sizeof scene_joint_options / sizeof scene_joint_options[0]; ++k)
+    if ((kind->needs & scene_joint_options[k].bit) && !(given & scene_joint_options[k].bit))
+      return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "joint %s: needs '%s' (usage: %s)", kind->word,
+                         scene_joint_options[k].word, kind->usage);
+
+  /* what the world says to the line's values, between dynamic bodies */
+  s = scene_trial_body (p, CAROM_DYNAMIC, &p->trial_pair[0]);
+  if (s == CAROM_OK)
+    s = scene_trial_body (p, CAROM_DYNAMIC, &p->trial_pair[1]);
+  if (s == CAROM_OK)
+    s = scene_try_joint (p, &j, j.ref[0] < 0 ? CAROM_NULL_BODY : p->trial_pair[0], p->trial_pair[1]);
+  if (s != CAROM_OK)
+    return scene_joint_fail (p, &j, s);
+  if (!mem_reserve (&p->allocator, (void **) &p->joints, &p->joint_cap, p->joint_count + 1, sizeof *p->joints))
+    return scene_fail (p, CAROM_ERR_OUT_OF_MEMORY, "out of memory");
+  p->joints[p->joint_count++] = j;
+  return CAROM_OK;
+}
+
+/* After the first pass: each joint's names are bodies' (or the world), and
+ * the world takes the joint between bodies of their types; errors at the
+ * joint's line, in line order. */
+static carom_status scene_check_joints (scene_parser *p)
+{
+  int32_t i, k;
+  for (i = 0; i < p->joint_count; ++i)
+    {
+      scene_joint *j = &p->joints[i];
+      carom_body_id ids[2] = { CAROM_NULL_BODY, CAROM_NULL_BODY };
+      carom_status s;
+      p->line = j->line;
+      for (k = 0; k < 2; ++k)
+        {
+          scene_name *e;
+          j->entry[k] = -1;
+          if (j->ref[k] < 0)
+            continue;
+          j->entry[k] = scene_name_find (p, p->text + j->ref[k]);
+          if (j->entry[k] < 0)
+            return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "joint %s: no body is named '%s'", j->kind->word,
+                               p->text + j->ref[k]);
+          e = &p->names[j->entry[k]];
+          s = scene_trial_body (p, e->type, &e->stub);
+          if (s != CAROM_OK)
+            return scene_joint_fail (p, j, s);
+          ids[k] = e->stub;
+        }
+      s = scene_try_joint (p, j, ids[0], ids[1]);
+      if (s != CAROM_OK)
+        return scene_joint_fail (p, j, s);
+    }
+  p->line = 0;
+  return CAROM_OK;
+}
+
+/* After the second pass: the joints, between the bodies they name. */
+static carom_status scene_add_joints (scene_parser *p)
+{
+  int32_t i;
+  for (i = 0; i < p->joint_count; ++i)
+    {
+      const scene_joint *j = &p->joints[i];
+      carom_joint_def d = j->def;
+      carom_status s;
+      d.a = j->entry[0] < 0 ? CAROM_NULL_BODY : p->names[j->entry[0]].id;
+      d.b = p->names[j->entry[1]].id;
+      s = carom_world_add_joint (p->world, &d, NULL);
+      if (s != CAROM_OK)
+        {
+          p->line = j->line;
+          return scene_joint_fail (p, j, s);
+        }
+    }
+  return CAROM_OK;
 }
 
 static carom_status scene_do_central (scene_parser *p)
@@ -706,6 +1204,7 @@ static const scene_statement scene_statements[] = {
   { "polygon", SCENE_BODY, 6, -1, OPT_BODY, 0, "polygon X1 Y1 X2 Y2 X3 Y3 ... [options]", scene_do_polygon },
   { "compound", SCENE_BODY, 0, 0, OPT_BODY, 0, "compound [options], then its shapes, then end", scene_do_compound },
   { "end", SCENE_BODY, 0, 0, 0, 0, "end", scene_do_end },
+  { "joint", SCENE_JOINT, 0, 0, 0, 1, "joint KIND A B [options]", scene_do_joint },
 };
 
 /* Inside a compound block: its shapes, with the options a shape takes. */
@@ -721,15 +1220,6 @@ static const scene_statement scene_part_statements[] = {
 };
 
 /* ------------------------------------------------------------ dispatcher */
-
-static const scene_option *scene_find_option (const char *word)
-{
-  size_t i;
-  for (i = 0; i < sizeof scene_options / sizeof scene_options[0]; ++i)
-    if (strcmp (word, scene_options[i].word) == 0)
-      return &scene_options[i];
-  return NULL;
-}
 
 static carom_status scene_push_number (scene_parser *p, double v)
 {
@@ -783,6 +1273,7 @@ static carom_status scene_apply_option (scene_parser *p, const scene_option *opt
       break;
     case OPT_FIXED: break; /* applied once the body exists */
     case OPT_BULLET: break;
+    case OPT_NAME: break;  /* a word, read by scene_arguments */
     }
   return s;
 }
@@ -831,6 +1322,15 @@ static carom_status scene_arguments (scene_parser *p, const scene_statement *st)
       if (p->opts & opt->bit)
         return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "%s: option '%s' given twice", st->word, word);
       p->opts |= opt->bit;
+      if (opt->count < 0)
+        {
+          /* `name NAME`: kept for the end of the line */
+          s = scene_check_name (p, st->word, i < p->tok_count ? p->tok[i] : NULL);
+          if (s != CAROM_OK)
+            return s;
+          p->name = p->tok[i++];
+          continue;
+        }
       for (k = 0; k < opt->count; ++k)
         {
           if (i >= p->tok_count || !scene_looks_numeric (p->tok[i]))
@@ -854,6 +1354,8 @@ static carom_status scene_arguments (scene_parser *p, const scene_statement *st)
                        st->word);
   if ((p->opts & OPT_FIXED) && p->body.spin != 0.0)
     return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "%s: a 'fixed' (non-rotating) body cannot spin", st->word);
+  if (p->opts & OPT_NAME)
+    return scene_name_line (p, st->word);
   return CAROM_OK;
 }
 
@@ -887,10 +1389,12 @@ static carom_status scene_statement_run (scene_parser *p)
         st = &scene_statements[i];
   if (!st)
     return scene_fail (p, CAROM_ERR_SCENE_SYNTAX, "unknown statement '%s'", p->tok[0]);
-  if (p->world && st->kind == SCENE_SETTING)
-    return CAROM_OK; /* applied in the first pass */
+  if (p->world && st->kind != SCENE_BODY)
+    return CAROM_OK; /* applied, or kept for after the bodies, in the first pass */
   p->num_count = 0;
   p->opts = 0;
+  p->name = NULL;
+  p->name_entry = -1;
   carom_body_def_init (&p->body, sizeof p->body);
   if (!st->words)
     {
@@ -994,6 +1498,10 @@ static void scene_parser_destroy (scene_parser *p)
   mem_free (&p->allocator, p->parts, (size_t) p->part_cap * sizeof *p->parts);
   mem_free (&p->allocator, p->part_first, (size_t) p->first_cap * sizeof *p->part_first);
   mem_free (&p->allocator, p->part_xy, (size_t) p->xy_cap * sizeof *p->part_xy);
+  mem_free (&p->allocator, p->names, (size_t) p->name_cap * sizeof *p->names);
+  mem_free (&p->allocator, p->slots, (size_t) p->slot_cap * sizeof *p->slots);
+  mem_free (&p->allocator, p->text, (size_t) p->text_cap);
+  mem_free (&p->allocator, p->joints, (size_t) p->joint_cap * sizeof *p->joints);
   carom_world_destroy (p->trial);
 }
 
@@ -1029,6 +1537,8 @@ carom_status carom_scene_load_text (carom_world **world, const char *text, size_
   if (s == CAROM_OK)
     s = scene_pass (&p, text, length);
   if (s == CAROM_OK)
+    s = scene_check_joints (&p);
+  if (s == CAROM_OK)
     {
       s = carom_world_init (&p.world, &p.def);
       if (s != CAROM_OK)
@@ -1038,6 +1548,8 @@ carom_status carom_scene_load_text (carom_world **world, const char *text, size_
     s = scene_apply_effects (&p);
   if (s == CAROM_OK)
     s = scene_pass (&p, text, length);
+  if (s == CAROM_OK)
+    s = scene_add_joints (&p);
   if (s == CAROM_OK)
     s = scene_check_named_effects (&p);
   if (s == CAROM_OK)

@@ -51,7 +51,8 @@ check-demo:
 # (the busy scenes are 230 KB as true colour, 60-80 KB so).
 DEMO_SHOTS := "thesis --frames 50 --keys vg" "balls --frames 120 --keys v" "pyramid --frames 180" \
               "rain --frames 150" "gas --frames 120" "platform --frames 310" \
-              "compound --frames 240" \
+              "compound --frames 240" "pendulum --frames 70 --keys v" "bridge --frames 100" \
+              "ragdoll --frames 60" "car --frames 260" \
               "help --paused --frames 2 --keys h thesis"
 
 demo-shots: $(DEMO_BIN)

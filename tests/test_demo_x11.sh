@@ -3,8 +3,9 @@
 # demo on scenes/thesis.scene, drive it with xdotool (keys through XTEST,
 # the mouse), dump the window with xwd and check the pictures: not blank,
 # moving while running, still while paused, changed by `.`, `v`, `h` and a
-# mouse drag; every key survives; `q` quits with status 0; --screenshot
-# writes a PNG; a bad scene file fails with FILE:LINE.
+# mouse drag; the drag's mouse joint pulls the body to the pointer; every
+# key survives; `q` quits with status 0; --screenshot writes a PNG; a bad
+# scene file fails with FILE:LINE.
 #
 # Usage: tests/test_demo_x11.sh [DEMO-BINARY]     (default build/carom-demo)
 # Needs Xvfb, xdotool and xwd (tools/ensure-deps xtest). ImageMagick, if
@@ -176,6 +177,10 @@ shot help_off
 
 # Restart (still paused), then drag the square (box at 4, 6.8 in the scene
 # file): the demo prints its view, from which we find it on the screen.
+# While the button is held the grab is a mouse joint: paused, the body
+# stays put and the picture shows the pull (the body outlined, a line to
+# the pointer); stepping with `.` lets the joint pull the grabbed point to
+# the pointer, which the demo prints on release.
 key r
 shot restarted
 if same help_off restarted; then fail "'r' did not restart the scene"
@@ -189,12 +194,27 @@ pos=$(echo "$view" | awk -v wx=4 -v wy=6.8 -v ox="${X:-0}" -v oy="${Y:-0}" '{
 if [ -n "$pos" ]; then
   set -- $pos
   timeout 5 xdotool mousemove "$1" "$2" mousedown 1 \
-    mousemove "$(($1 + 20))" "$(($2 + 10))" mousemove "$(($1 + 60))" "$(($2 + 40))" mouseup 1
-  shot dragged
+    mousemove "$(($1 + 20))" "$(($2 + 10))" mousemove "$(($1 + 60))" "$(($2 + 40))"
+  shot holding
   if grep -q 'grab at' "$OUT/demo.log"; then pass "pressing on a body grabs it"
   else fail "no body grabbed at pixel $pos (view: $view)"; fi
-  if same restarted dragged; then fail "dragging did not move the body"
-  else pass "dragging moves the body while paused"; fi
+  if same restarted holding; then fail "holding a body while paused shows nothing"
+  else pass "holding a body while paused shows its pull"; fi
+  key period period period period period period period period period period period period period period period \
+    period period period period period period period period period period period period period period period
+  timeout 5 xdotool mouseup 1
+  shot dragged
+  if same restarted dragged; then fail "dragging and stepping did not move the body"
+  else pass "dragging and stepping moves the body"; fi
+  # "release at X Y, the grabbed point at PX PY": within 0.15 m after half
+  # a second of the joint's 5 Hz pull
+  gap=$(grep 'release at' "$OUT/demo.log" | tail -n 1 | tr -d ',' | awk '{ dx = $4 - $10; dy = $5 - $11;
+    printf "%.3f", sqrt (dx * dx + dy * dy) }')
+  if [ -n "$gap" ] && awk -v g="$gap" 'BEGIN { exit !(g < 0.15) }'; then
+    pass "the mouse joint pulls the grabbed point to the pointer (${gap} m off)"
+  else
+    fail "the grabbed point is ${gap:-?} m from the pointer after 30 steps ($(grep 'release at' "$OUT/demo.log" | tail -n 1))"
+  fi
 else
   fail "the demo did not print its view (--verbose)"
 fi
@@ -202,7 +222,8 @@ fi
 # Every key, twice over, including scene switches: the demo must survive.
 key 2 3 4 5 1 Up Up Left Right Down g g plus plus minus Page_Up Page_Down c c r v h h \
   space period period space KP_Add KP_Subtract equal question f d o s t f d o s t
-key Home F5 x 0 9 BackSpace Tab Return
+key 6 7 8 9 0 n n p j j p p n 1
+key Home F5 x BackSpace Tab Return
 sleep 0.5
 if alive; then pass "every key is survived"
 else fail "the demo died during the key test"; fi

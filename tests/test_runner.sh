@@ -1,6 +1,7 @@
 #!/bin/sh
 # Output format of the headless runner (docs/scenes.md): the key=value line,
-# the CSV, FILE:LINE errors and exit statuses, the PNG/SVG files.
+# the CSV, FILE:LINE errors and exit statuses, the PNG/SVG files, the
+# shipped jointed scenes.
 # Usage: tests/test_runner.sh [CAROM]     (default build/carom)
 # CAROM_WRAP runs every call under a wrapper, e.g.
 #   CAROM_WRAP="valgrind -q --leak-check=full --error-exitcode=99" tests/test_runner.sh
@@ -49,7 +50,7 @@ EOF
 printf 'gravity 0 -1\ncircle 1\ncircle 1 at 0 0 colour red\n' >"$tmp/bad.scene"
 
 # ------------------------------------------------------------- key=value line
-keys="bodies steps dt ms_per_step energy_start energy_end kinetic_start kinetic_end momentum_x momentum_y angular_momentum max_penetration contacts nan"
+keys="bodies joints steps dt ms_per_step energy_start energy_end kinetic_start kinetic_end momentum_x momentum_y angular_momentum max_penetration contacts nan"
 if run 0 run "$tmp/small.scene" --steps 30; then
   ok "run exits 0"
   check "run prints exactly one line" test "$(wc -l <"$tmp/out")" -eq 1
@@ -136,6 +137,28 @@ else
   not_ok "run --png --svg exits 0"
 fi
 check "an unwritable --png exits 1" run 1 run "$tmp/small.scene" --steps 1 --png "$tmp/no/such/dir.png"
+
+# ---------------------------------------------------------------- joints
+# The shipped jointed scenes (run from the top of the source tree): they
+# load, step and draw, with their joints counted.
+for s in pendulum:4:3 bridge:28:21 ragdoll:20:9 car:7:2; do
+  name=${s%%:*}; rest=${s#*:}; nb=${rest%%:*}; nj=${rest#*:}
+  if run 0 run "scenes/$name.scene" --steps 120 --png "$tmp/$name.png" --width 200; then
+    check "$name.scene: bodies=$nb joints=$nj nan=0" sh -c \
+      'case "$1" in "bodies=$2 joints=$3 "*" nan=0 "*) exit 0;; esac; exit 1' - "$(cat "$tmp/out")" "$nb" "$nj"
+    check "$name.scene: joints in effects" grep -q "effects=.*joints" "$tmp/out"
+    check "$name.scene: --png draws it" test -s "$tmp/$name.png"
+  else
+    not_ok "run scenes/$name.scene exits 0"
+  fi
+done
+printf 'circle 1 name a\njoint revolute world b at 0 0\n' >"$tmp/badjoint.scene"
+if run 1 check "$tmp/badjoint.scene"; then
+  check "a joint naming no body: FILE:LINE: message" \
+    grep -q "^$tmp/badjoint.scene:2: joint revolute: no body is named 'b'\$" "$tmp/err"
+else
+  not_ok "a joint naming no body exits 1"
+fi
 
 echo "test_runner: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -30,6 +30,58 @@ static carom_body_id body_at (const carom_world *w, int32_t i)
   return ids[i];
 }
 
+/* The world's joints in slot order (the order of the scene's joint lines),
+ * through the debug draw: the API has no list of joints. */
+typedef struct joint_list {
+  carom_joint_id ids[64];
+  int32_t count;
+} joint_list;
+
+static void joint_list_add (carom_joint_type type, const double *xy, carom_joint_id id, void *user)
+{
+  joint_list *l = user;
+  (void) type;
+  (void) xy;
+  if (l->count < 64)
+    l->ids[l->count] = id;
+  l->count++;
+}
+
+static carom_joint_id joint_at (const carom_world *w, int32_t i)
+{
+  carom_debug_draw draw;
+  joint_list l;
+  l.count = 0;
+  assert_status (carom_debug_draw_init (&draw, sizeof draw), CAROM_OK);
+  draw.draw_bodies = draw.draw_contacts = 0;
+  draw.joint = joint_list_add;
+  draw.user = &l;
+  assert_status (carom_world_draw (w, &draw), CAROM_OK);
+  assert_int_equal (l.count, carom_world_joint_count (w));
+  assert_true (i < l.count && i < 64);
+  return l.ids[i];
+}
+
+/* Joint i is of `type` between bodies a and b (-1: the world) in creation
+ * order, with its anchors now at (ax, ay) and (bx, by). */
+static void assert_joint (const carom_world *w, int32_t i, carom_joint_type type, int32_t a, int32_t b, double ax,
+                          double ay, double bx, double by)
+{
+  carom_joint_id id = joint_at (w, i);
+  carom_joint_type t;
+  carom_body_id ja, jb;
+  double x0, y0, x1, y1;
+  assert_status (carom_joint_get_bodies (w, id, &t, &ja, &jb), CAROM_OK);
+  assert_int_equal (t, type);
+  assert_true (ja == (a < 0 ? CAROM_NULL_BODY : body_at (w, a)));
+  assert_true (jb == body_at (w, b));
+  assert_status (carom_joint_get_anchors (w, id, &x0, &y0, &x1, &y1), CAROM_OK);
+  assert_near_abs (x0, ax, 1e-12);
+  assert_near_abs (y0, ay, 1e-12);
+  assert_near_abs (x1, bx, 1e-12);
+  assert_near_abs (y1, by, 1e-12);
+}
+
 static void test_settings_and_bodies (void **state)
 {
   const char *text = "# a small scene\n"
@@ -262,6 +314,123 @@ static void test_kinematic_sensor_and_filter_options (void **state)
   carom_world_destroy (w);
 }
 
+/* Every joint statement makes the joint it says, between the bodies it
+ * names (`world`: CAROM_NULL_BODY), whether they come before or after it. */
+static void test_joint_statements (void **state)
+{
+  carom_world *w = load ("gravity 0 -10\n"
+                         "joint revolute world bob at 0 5 limit -1 1 motor 0.5 20 spring 2 0.5\n"
+                         "circle 0.25 at 0 3 name bob\n"
+                         "box 8 0.5 at 0 -1 static name ground\n"
+                         "box 1 0.5 at 0 0 name slider\n"
+                         "joint prismatic ground slider at 0 0 axis 1 0 limit -2 2 motor 1 100 spring 1 0.5 collide\n"
+                         "joint wheel slider wheel at 0.5 -0.3 axis 0 1 limit -0.2 0.2 motor -3 40 spring 4 0.7\n"
+                         "circle 0.2 at 0.5 -0.3 name wheel\n"
+                         "joint distance bob slider at 0 3 to 0 0.25 length 2.5 limit 2 3 spring 3 0.1 motor 0 5\n"
+                         "joint weld slider Slider at -0.5 0.25 spring 5 1 collide\n"
+                         "regular 5 0.3 at -0.5 0.5 name Slider\n"
+                         "joint motor ground Slider force 200 torque 20\n"
+                         "joint mouse bob at 0.1 3.1 force 1000 spring 6 0.8\n"
+                         "compound at 3 3 name table\n"
+                         "  box 1 0.1 at 0 0.5\n"
+                         "end\n"
+                         "joint weld world table at 3 3.5\n");
+  double x, y;
+  (void) state;
+  assert_int_equal (carom_world_body_count (w), 6);
+  assert_int_equal (carom_world_joint_count (w), 8);
+  assert_true ((carom_world_get_effects (w) & CAROM_EFFECT_JOINTS) != 0);
+  /* bodies in file order: bob 0, ground 1, slider 2, wheel 3, Slider 4
+   * (names are case-sensitive), table 5 */
+  assert_joint (w, 0, CAROM_JOINT_REVOLUTE, -1, 0, 0, 5, 0, 5);
+  assert_joint (w, 1, CAROM_JOINT_PRISMATIC, 1, 2, 0, 0, 0, 0);
+  assert_joint (w, 2, CAROM_JOINT_WHEEL, 2, 3, 0.5, -0.3, 0.5, -0.3);
+  assert_joint (w, 3, CAROM_JOINT_DISTANCE, 0, 2, 0, 3, 0, 0.25);
+  assert_joint (w, 4, CAROM_JOINT_WELD, 2, 4, -0.5, 0.25, -0.5, 0.25);
+  /* a motor joint holds b's centre; a mouse joint: the target, then b's
+   * point */
+  carom_body_get_position (w, body_at (w, 4), &x, &y);
+  assert_joint (w, 5, CAROM_JOINT_MOTOR, 1, 4, x, y, x, y);
+  assert_joint (w, 6, CAROM_JOINT_MOUSE, -1, 0, 0.1, 3.1, 0.1, 3.1);
+  assert_joint (w, 7, CAROM_JOINT_WELD, -1, 5, 3, 3.5, 3, 3.5);
+  carom_world_destroy (w);
+}
+
+/* The options reach the joint: a motor turns, a limit stops, a length is
+ * held, a motor joint's force holds against gravity, `collide` lets the
+ * joined bodies touch. */
+static void test_joint_options (void **state)
+{
+  carom_world *w = load ("gravity 0 -10\n"
+                         "circle 0.5 at 0 0 name wheel\n"
+                         "joint revolute world wheel at 0 0 motor 3 1000\n"
+                         "box 0.5 0.5 at 5 0 name slider\n"
+                         "joint prismatic world slider at 5 0 axis 0 1 limit -0.5 0.5\n"
+                         "circle 0.2 at 10 0 name bob\n"
+                         "joint distance world bob at 10 2 to 10 0 length 3\n"
+                         "box 1 1 at 15 0 name lifted\n"
+                         "joint motor world lifted force 1000 torque 100\n"
+                         "box 1 1 at 20 0 name p\n"
+                         "box 1 1 at 20.5 0 name q\n"
+                         "joint weld p q at 20.25 0 collide\n"
+                         "box 1 1 at 25 0 name r\n"
+                         "box 1 1 at 25.5 0 name t\n"
+                         "joint weld r t at 25.25 0\n");
+  carom_body_id a, b, pq[2];
+  double spin, x, y, ax, ay, bx, by;
+  int i;
+  (void) state;
+  for (i = 0; i < 120; ++i)
+    assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+  carom_body_get_spin (w, body_at (w, 0), &spin);
+  assert_near_abs (spin, 3.0, 1e-3);
+  carom_body_get_position (w, body_at (w, 1), &x, &y);
+  assert_near_abs (x, 5.0, 1e-6);
+  assert_near_abs (y, -0.5, 0.02);
+  assert_status (carom_joint_get_anchors (w, joint_at (w, 2), &ax, &ay, &bx, &by), CAROM_OK);
+  assert_near_abs (hypot (bx - ax, by - ay), 3.0, 0.01);
+  carom_body_get_position (w, body_at (w, 3), &x, &y);
+  assert_near_abs (x, 15.0, 1e-3);
+  assert_near_abs (y, 0.0, 1e-3);
+  /* both welded pairs overlap: only the `collide` pair touches */
+  pq[0] = body_at (w, 4), pq[1] = body_at (w, 5);
+  assert_status (carom_world_detect (w), CAROM_OK);
+  assert_true (carom_world_contact_count (w) > 0);
+  for (i = 0; i < carom_world_contact_count (w); ++i)
+    {
+      carom_world_get_contact (w, i, &a, &b, NULL, NULL, NULL, NULL, NULL);
+      assert_true ((a == pq[0] && b == pq[1]) || (a == pq[1] && b == pq[0]));
+    }
+  carom_world_destroy (w);
+}
+
+/* Many names: the table grows, and a chain of 300 links, each line naming
+ * the link of the line after it, finds every one. */
+static void test_joint_chain_of_names (void **state)
+{
+  size_t cap = 300 * 96 + 64, len = 0;
+  char *text = malloc (cap);
+  carom_world *w;
+  int i;
+  (void) state;
+  assert_non_null (text);
+  for (i = 0; i < 300; ++i)
+    {
+      if (i == 0)
+        len += (size_t) snprintf (text + len, cap - len, "joint revolute world link0 at 0 0\n");
+      else
+        len += (size_t) snprintf (text + len, cap - len, "joint revolute link%d link%d at %d 0\n", i - 1, i, i);
+      len += (size_t) snprintf (text + len, cap - len, "box 1 0.2 at %d.5 0 name link%d\n", i, i);
+    }
+  w = load (text);
+  free (text);
+  assert_int_equal (carom_world_body_count (w), 300);
+  assert_int_equal (carom_world_joint_count (w), 300);
+  assert_joint (w, 0, CAROM_JOINT_REVOLUTE, -1, 0, 0, 0, 0, 0);
+  assert_joint (w, 42, CAROM_JOINT_REVOLUTE, 41, 42, 42, 0, 42, 0);
+  carom_world_destroy (w);
+}
+
 typedef struct bad_case {
   const char *text;
   int32_t line;
@@ -337,7 +506,61 @@ static const bad_case bad_cases[] = {
   /* errors after good bodies, and a later line's error after good lines */
   { "circle 1\r\nbox 1 1\r\n# c\r\nbox 1 1 at 0 zero\r\n", 4, CAROM_ERR_SCENE_SYNTAX },
   { "polygon 0 0 1 0 0 1 at 1 1\nregular 6 1\ncircle 1 density -2\n", 3, CAROM_ERR_BAD_DENSITY },
+  /* names */
+  { "circle 1 name a\nbox 1 1 name a\n", 2, CAROM_ERR_SCENE_SYNTAX },               /* given twice */
+  { "compound name a\n box 1 1\nend\ncircle 1 name a\n", 4, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name world\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name 2b\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name a name b\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "compound\n box 1 1 name a\nend\n", 2, CAROM_ERR_SCENE_SYNTAX },               /* shapes have none */
+  { "bounds 0 0 1 1 name a\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  /* joints: references */
+  { "circle 1 name a\n\njoint revolute a b at 0 0\n", 3, CAROM_ERR_SCENE_SYNTAX }, /* unknown name */
+  { "joint revolute world b at 0 0\ncircle 1 name a\n", 1, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name a\njoint revolute a a at 0 0\n", 2, CAROM_ERR_BAD_ARGUMENT },   /* a body to itself */
+  { "circle 1 name a\njoint revolute a world at 0 0\n", 2, CAROM_ERR_SCENE_SYNTAX }, /* world only as A */
+  { "circle 1 name a\njoint mouse world at 0 0\n", 2, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name a static\ncircle 1 name b kinematic\njoint weld a b at 0 0\n", 3, CAROM_ERR_STATIC_BODY },
+  { "joint revolute world a at 0 0\ncircle 1 name a static\n", 1, CAROM_ERR_STATIC_BODY },
+  /* joints: malformed lines */
+  { "circle 1 name a\njoint\n", 2, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name a\njoint hinge world a at 0 0\n", 2, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name a\njoint revolute world\n", 2, CAROM_ERR_SCENE_SYNTAX },         /* B missing */
+  { "circle 1 name a\njoint revolute world 1 at 0 0\n", 2, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name a\njoint revolute world a\n", 2, CAROM_ERR_SCENE_SYNTAX },       /* no at */
+  { "circle 1 name a\njoint prismatic world a at 0 0\n", 2, CAROM_ERR_SCENE_SYNTAX }, /* no axis */
+  { "circle 1 name a\njoint distance world a at 0 0\n", 2, CAROM_ERR_SCENE_SYNTAX }, /* no to */
+  { "circle 1 name a\njoint revolute world a at 0\n", 2, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name a\njoint revolute world a at 0 0 at 1 1\n", 2, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name a\njoint revolute world a at 0 0 axis 1 0\n", 2, CAROM_ERR_SCENE_SYNTAX }, /* not its option */
+  { "circle 1 name a\njoint weld world a at 0 0 motor 1 1\n", 2, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name a\njoint motor world a at 0 0\n", 2, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name a\njoint mouse a at 0 0 collide\n", 2, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name a\njoint revolute world a at 0 0 collide 1\n", 2, CAROM_ERR_SCENE_SYNTAX },
+  { "circle 1 name a\njoint revolute world a at 0 x\n", 2, CAROM_ERR_SCENE_SYNTAX },
+  /* joints: values, with the world's status */
+  { "circle 1 name a\njoint revolute world a at 0 nan\n", 2, CAROM_ERR_NOT_FINITE },
+  { "circle 1 name a\njoint revolute world a at 0 1e101\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 name a\njoint revolute world a at 0 0 limit 1 -1\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 name a\njoint revolute world a at 0 0 motor 1 -5\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 name a\njoint wheel world a at 0 0 axis 0 1 spring -1 0.5\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 name a\njoint wheel world a at 0 0 axis 0 1 spring 4 -0.5\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 name a\njoint prismatic world a at 0 0 axis 0 0\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 name a\njoint distance world a at 1 1 to 1 1\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 name a\njoint distance world a at 1 1 to 1 2 length 0\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 name a\njoint distance world a at 1 1 to 1 2 limit 3 2\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 name a\njoint motor world a force -1\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 name a\njoint motor world a torque -1\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  { "circle 1 name a\njoint mouse a at 0 0 force -1\n", 2, CAROM_ERR_BAD_ARGUMENT },
+  /* a joint's values are checked on its line, its names once the file is
+   * read: a later line's error comes first then */
+  { "joint revolute world a at 0 0 limit 1 0\ncircle -1 name a\n", 1, CAROM_ERR_BAD_ARGUMENT },
+  { "joint revolute world b at 0 0\ncircle -1 name a\n", 2, CAROM_ERR_BAD_SIZE },
+  { "circle 1 name a\ncircle 1 name b\njoint weld a c at 0 0\njoint weld a d at 0 0\n", 3, CAROM_ERR_SCENE_SYNTAX },
+  { "gravity 0 -10\neffects gravity joints\nbox 1 1\n", 2, CAROM_ERR_BAD_ARGUMENT }, /* no joint */
 };
+
 
 static void test_bad_lines (void **state)
 {
@@ -375,6 +598,15 @@ static void test_messages (void **state)
     { "circle 1.5x\n", "1: circle: '1.5x' is not a number" },
     { "circle -1\n", "1: circle: radius R must be positive, got -1" },
     { "polygon 0 0 2 2 2 0 0 2\n", "1: polygon: the polygon's edges cross or touch each other" },
+    { "box 1 1 name a\ncircle 1 name a\n", "2: circle: the name 'a' is already the body of line 1" },
+    { "box 1 1 name a\n\njoint weld world b at 0 0\n", "3: joint weld: no body is named 'b'" },
+    { "box 1 1 name a\njoint revolute world a at 0 0 limit 1 0\n",
+      "2: joint revolute: the limit's lower end 1 is above its upper end 0" },
+    { "box 1 1 name a static\njoint revolute world a at 0 0\n", "2: joint revolute: 'a' is not a dynamic body" },
+    { "box 1 1 name a static\nbox 1 1 name b kinematic\njoint weld a b at 0 0\n",
+      "3: joint weld: neither 'a' nor 'b' is a dynamic body" },
+    { "box 1 1 name a\njoint prismatic world a at 0 0 axis 1 0 spring 2\n",
+      "2: joint prismatic: option 'spring' needs 2 numbers" },
   };
   size_t k;
   (void) state;
@@ -489,7 +721,9 @@ static void counting_free (void *p, size_t size, void *user)
 
 static void test_allocator_and_out_of_memory (void **state)
 {
-  const char *text = "gravity 0 -10\nbounds 0 0 10 10\npolygon 0 0 1 0 1 1 0.5 0.2 0 1 at 5 5\nregular 7 1 at 2 2\n";
+  const char *text = "gravity 0 -10\njoint revolute p r at 3 3\nbounds 0 0 10 10\n"
+                     "polygon 0 0 1 0 1 1 0.5 0.2 0 1 at 5 5 name p\nregular 7 1 at 2 2 name r\n"
+                     "joint distance world r at 2 5 to 2 2\n";
   counting c = { 0, 0, -1 };
   carom_world_def def;
   carom_world *w = NULL;
@@ -501,6 +735,7 @@ static void test_allocator_and_out_of_memory (void **state)
   def.allocator.user = &c;
   assert_status (carom_scene_load_text (&w, text, strlen (text), &def, NULL), CAROM_OK);
   assert_int_equal (carom_world_body_count (w), 6);
+  assert_int_equal (carom_world_joint_count (w), 2);
   carom_world_destroy (w);
   assert_int_equal (c.live, 0);
 
@@ -621,19 +856,23 @@ static void test_continuous_statement (void **state)
   assert_non_null (strstr (err.message, "continuous"));
 }
 
-/* Every shipped scene loads, with the body count it promises. */
+/* Every shipped scene loads, with the body and joint counts it promises. */
 static void test_shipped_scenes (void **state)
 {
   struct {
     const char *path;
-    int32_t min_bodies, max_bodies;
+    int32_t min_bodies, max_bodies, joints;
   } scenes[] = {
-    { "scenes/thesis.scene", 13, 13 },
-    { "scenes/balls.scene", 54, 54 },
-    { "scenes/pyramid.scene", 211, 211 },
-    { "scenes/rain.scene", 2003, 2003 },
-    { "scenes/gas.scene", 504, 504 },
-    { "scenes/platform.scene", 10, 10 },
+    { "scenes/thesis.scene", 13, 13, 0 },
+    { "scenes/balls.scene", 54, 54, 0 },
+    { "scenes/pyramid.scene", 211, 211, 0 },
+    { "scenes/rain.scene", 2003, 2003, 0 },
+    { "scenes/gas.scene", 504, 504, 0 },
+    { "scenes/platform.scene", 10, 10, 0 },
+    { "scenes/pendulum.scene", 4, 4, 3 },
+    { "scenes/bridge.scene", 28, 28, 21 },
+    { "scenes/ragdoll.scene", 20, 20, 9 },
+    { "scenes/car.scene", 7, 7, 2 },
   };
   size_t k;
   (void) state;
@@ -648,6 +887,8 @@ static void test_shipped_scenes (void **state)
       n = carom_world_body_count (w);
       if (n < scenes[k].min_bodies || n > scenes[k].max_bodies)
         fail_msg ("%s: %d bodies", scenes[k].path, (int) n);
+      if (carom_world_joint_count (w) != scenes[k].joints)
+        fail_msg ("%s: %d joints", scenes[k].path, (int) carom_world_joint_count (w));
       carom_world_destroy (w);
     }
 }
@@ -681,6 +922,9 @@ int main (void)
     cmocka_unit_test (test_def_defaults),
     cmocka_unit_test (test_bad_lines),
     cmocka_unit_test (test_kinematic_sensor_and_filter_options),
+    cmocka_unit_test (test_joint_statements),
+    cmocka_unit_test (test_joint_options),
+    cmocka_unit_test (test_joint_chain_of_names),
     cmocka_unit_test (test_messages),
     cmocka_unit_test (test_nul_byte),
     cmocka_unit_test (test_error_struct_optional),
