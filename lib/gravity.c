@@ -37,28 +37,26 @@ void gravity_kick (carom_world *world, const step_context *ctx)
 /* Bodies held by joints move by leapfrog (RATTLE, with the joints'
  * projections, joint_tree.c): half of the sub-step's uniform kick before
  * the move, half after it, so a swing's energy error is second order in
- * the sub-step instead of first. This takes the second half back after
- * gravity_kick; gravity_joint_kick gives it after the move. */
-void gravity_joint_hold (carom_world *world, const step_context *ctx)
+ * the sub-step instead of first. gravity_joint_hold takes the second half
+ * back after gravity_kick; gravity_joint_kick gives it after the move. */
+static void joint_half_kick (carom_world *world, const step_context *ctx, double sign)
 {
   solver_body *sb = world->solver_bodies;
-  vec2 half = v2_scale (ctx->kick, 0.5);
-  int32_t i;
-  if (ctx->gravity.x == 0.0 && ctx->gravity.y == 0.0)
-    return;
-  for (i = 0; i < world->slot_count; ++i)
-    if (sb[i].constrained & CONSTRAINED_JOINT)
-      sb[i].v = v2_sub (sb[i].v, half);
-}
-
-void gravity_joint_kick (carom_world *world, const step_context *ctx)
-{
-  solver_body *sb = world->solver_bodies;
-  vec2 half = v2_scale (ctx->kick, 0.5);
+  vec2 half = v2_scale (ctx->kick, 0.5 * sign);
   int32_t i;
   if (ctx->gravity.x == 0.0 && ctx->gravity.y == 0.0)
     return;
   for (i = 0; i < world->slot_count; ++i)
     if (sb[i].constrained & CONSTRAINED_JOINT)
       sb[i].v = v2_add (sb[i].v, half);
+}
+
+void gravity_joint_hold (carom_world *world, const step_context *ctx)
+{
+  joint_half_kick (world, ctx, -1.0);
+}
+
+void gravity_joint_kick (carom_world *world, const step_context *ctx)
+{
+  joint_half_kick (world, ctx, 1.0);
 }

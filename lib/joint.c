@@ -311,14 +311,29 @@ carom_status carom_world_add_joint (carom_world *world, const carom_joint_def *d
   return CAROM_OK;
 }
 
+/* The joint of a call: the status for a NULL world or a stale id, with
+ * *j NULL, or OK. */
+static carom_status live_joint (const carom_world *world, carom_joint_id id, joint **j)
+{
+  *j = world ? joint_lookup (world, id) : NULL;
+  return !world ? CAROM_ERR_NULL_ARGUMENT : *j ? CAROM_OK : CAROM_ERR_STALE_JOINT;
+}
+
+/* Write a pair of numbers to the outputs a call was given. */
+static void put2 (double *x, double *y, vec2 v)
+{
+  if (x)
+    *x = v.x;
+  if (y)
+    *y = v.y;
+}
+
 carom_status carom_world_remove_joint (carom_world *world, carom_joint_id id)
 {
   joint *j;
-  if (!world)
-    return CAROM_ERR_NULL_ARGUMENT;
-  j = joint_lookup (world, id);
-  if (!j)
-    return CAROM_ERR_STALE_JOINT;
+  carom_status st = live_joint (world, id, &j);
+  if (st != CAROM_OK)
+    return st;
   if (j->a >= 0 && world->bodies[j->a].type == CAROM_DYNAMIC)
     body_wake (&world->bodies[j->a]);
   if (world->bodies[j->b].type == CAROM_DYNAMIC)
@@ -342,12 +357,10 @@ int32_t carom_world_joint_count (const carom_world *world)
 carom_status carom_joint_get_bodies (const carom_world *world, carom_joint_id id, carom_joint_type *type,
                                      carom_body_id *a, carom_body_id *b)
 {
-  const joint *j;
-  if (!world)
-    return CAROM_ERR_NULL_ARGUMENT;
-  j = joint_lookup (world, id);
-  if (!j)
-    return CAROM_ERR_STALE_JOINT;
+  joint *j;
+  carom_status st = live_joint (world, id, &j);
+  if (st != CAROM_OK)
+    return st;
   if (type)
     *type = j->type;
   if (a)
@@ -360,38 +373,25 @@ carom_status carom_joint_get_bodies (const carom_world *world, carom_joint_id id
 carom_status carom_joint_get_anchors (const carom_world *world, carom_joint_id id, double *ax, double *ay,
                                       double *bx, double *by)
 {
-  const joint *j;
+  joint *j;
   vec2 pa, pb;
-  if (!world)
-    return CAROM_ERR_NULL_ARGUMENT;
-  j = joint_lookup (world, id);
-  if (!j)
-    return CAROM_ERR_STALE_JOINT;
+  carom_status st = live_joint (world, id, &j);
+  if (st != CAROM_OK)
+    return st;
   joint_anchors (world, j, &pa, &pb);
-  if (ax)
-    *ax = pa.x;
-  if (ay)
-    *ay = pa.y;
-  if (bx)
-    *bx = pb.x;
-  if (by)
-    *by = pb.y;
+  put2 (ax, ay, pa);
+  put2 (bx, by, pb);
   return CAROM_OK;
 }
 
 carom_status carom_joint_get_reaction (const carom_world *world, carom_joint_id id, double *fx, double *fy,
                                        double *torque)
 {
-  const joint *j;
-  if (!world)
-    return CAROM_ERR_NULL_ARGUMENT;
-  j = joint_lookup (world, id);
-  if (!j)
-    return CAROM_ERR_STALE_JOINT;
-  if (fx)
-    *fx = j->reaction_force.x;
-  if (fy)
-    *fy = j->reaction_force.y;
+  joint *j;
+  carom_status st = live_joint (world, id, &j);
+  if (st != CAROM_OK)
+    return st;
+  put2 (fx, fy, j->reaction_force);
   if (torque)
     *torque = j->reaction_torque;
   return CAROM_OK;
@@ -409,11 +409,9 @@ carom_status carom_joint_set_motor (carom_world *world, carom_joint_id id, int32
                                     double max_force)
 {
   joint *j;
-  if (!world)
-    return CAROM_ERR_NULL_ARGUMENT;
-  j = joint_lookup (world, id);
-  if (!j)
-    return CAROM_ERR_STALE_JOINT;
+  carom_status st = live_joint (world, id, &j);
+  if (st != CAROM_OK)
+    return st;
   if (!is_finite (speed) || !is_finite (max_force))
     return CAROM_ERR_NOT_FINITE;
   if (j->type == CAROM_JOINT_MOTOR || j->type == CAROM_JOINT_MOUSE || j->type == CAROM_JOINT_WELD
@@ -431,11 +429,9 @@ carom_status carom_joint_set_motor (carom_world *world, carom_joint_id id, int32
 carom_status carom_joint_set_target (carom_world *world, carom_joint_id id, double x, double y, double angle)
 {
   joint *j;
-  if (!world)
-    return CAROM_ERR_NULL_ARGUMENT;
-  j = joint_lookup (world, id);
-  if (!j)
-    return CAROM_ERR_STALE_JOINT;
+  carom_status st = live_joint (world, id, &j);
+  if (st != CAROM_OK)
+    return st;
   if (!is_finite (x) || !is_finite (y) || !is_finite (angle))
     return CAROM_ERR_NOT_FINITE;
   if ((j->type != CAROM_JOINT_MOUSE && j->type != CAROM_JOINT_MOTOR) || !is_moderate (x) || !is_moderate (y)

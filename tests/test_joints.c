@@ -62,6 +62,41 @@ static double agm (double a, double b)
   return a;
 }
 
+/* Upward crossings of a level, interpolated within the step: the mean
+ * period between the first and the last, and how many periods that is. */
+typedef struct crossings {
+  double level, last_value, t, first, last;
+  int periods;
+} crossings;
+
+static void crossings_init (crossings *c, double level, double value)
+{
+  c->level = level, c->last_value = value;
+  c->t = 0.0, c->first = c->last = -1.0;
+  c->periods = 0;
+}
+
+static void crossings_add (crossings *c, double value)
+{
+  c->t += DT;
+  if (c->last_value < c->level && value >= c->level)
+    {
+      double tc = c->t - DT + DT * (c->level - c->last_value) / (value - c->last_value);
+      if (c->first < 0.0)
+        c->first = tc;
+      else
+        ++c->periods;
+      c->last = tc;
+    }
+  c->last_value = value;
+}
+
+static double crossings_period (const crossings *c)
+{
+  assert_true (c->periods >= 5);
+  return (c->last - c->first) / c->periods;
+}
+
 /* ------------------------------------------------------------ pendulums */
 
 /* A small disc on a 1 m revolute joint to the world, released at theta0:
@@ -74,36 +109,25 @@ static void test_pendulum_period_is_exact (void **state)
   (void) state;
   for (k = 0; k < sizeof degrees / sizeof degrees[0]; ++k)
     {
-      double th0 = degrees[k] * M_PI / 180.0, L = 1.0, r = 0.05, m, inertia, t = 0.0, first = -1.0, last = -1.0,
-             lastx, x, y, exact, kk;
-      int periods = 0, s;
+      double th0 = degrees[k] * M_PI / 180.0, L = 1.0, r = 0.05, m, inertia, x, y, exact, kk;
+      int s;
+      crossings c;
       carom_world *w = new_world (G);
       carom_body_id b = add_disc (w, L * sin (th0), -L * cos (th0), r);
       add_joint (w, CAROM_JOINT_REVOLUTE, CAROM_NULL_BODY, b, 0.0, 0.0);
       carom_body_get_mass (w, b, &m, &inertia, NULL);
       kk = sin (th0 / 2.0);
       exact = 4.0 * sqrt ((inertia + m * L * L) / (m * G * L)) * (M_PI / (2.0 * agm (1.0, sqrt (1.0 - kk * kk))));
-      carom_body_get_position (w, b, &lastx, &y);
+      crossings_init (&c, 0.0, L * sin (th0));
       for (s = 0; s < 40 * 60; ++s)
         {
           step (w, 1);
-          t += DT;
           carom_body_get_position (w, b, &x, &y);
           /* the rod keeps its length */
           assert_near_abs (hypot (x, y), L, 1e-9);
-          if (lastx < 0.0 && x >= 0.0)
-            {
-              double tc = t - DT + DT * (-lastx) / (x - lastx);
-              if (first < 0.0)
-                first = tc;
-              else
-                ++periods;
-              last = tc;
-            }
-          lastx = x;
+          crossings_add (&c, x);
         }
-      assert_true (periods >= 5);
-      assert_near_rel ((last - first) / periods, exact, 2e-3);
+      assert_near_rel (crossings_period (&c), exact, 2e-3);
       carom_world_destroy (w);
     }
 }
@@ -500,30 +524,21 @@ static void test_distance_spring_period (void **state)
         carom_world *w = new_world (0.0);
         carom_body_id b = add_disc (w, 2.0 + stretch[k], 0.0, radii[i]);
         carom_joint_def d;
-        double t = 0.0, first = -1.0, last = -1.0, lastx = 2.0 + stretch[k], x, y;
-        int n = 0, s;
+        crossings c;
+        double x, y;
+        int s;
         carom_joint_def_init (&d, sizeof d);
         d.type = CAROM_JOINT_DISTANCE, d.b = b, d.x2 = 2.0 + stretch[k], d.length = 2.0;
         d.enable_spring = 1, d.hertz = 1.0;
         assert_status (carom_world_add_joint (w, &d, NULL), CAROM_OK);
+        crossings_init (&c, 2.0, 2.0 + stretch[k]);
         for (s = 0; s < 600; ++s)
           {
             step (w, 1);
-            t += DT;
             carom_body_get_position (w, b, &x, &y);
-            if (lastx < 2.0 && x >= 2.0)
-              {
-                double tc = t - DT + DT * (2.0 - lastx) / (x - lastx);
-                if (first < 0.0)
-                  first = tc;
-                else
-                  ++n;
-                last = tc;
-              }
-            lastx = x;
+            crossings_add (&c, x);
           }
-        assert_true (n >= 5);
-        assert_near_rel ((last - first) / n, 1.0, 2e-2);
+        assert_near_rel (crossings_period (&c), 1.0, 2e-2);
         carom_world_destroy (w);
       }
 }
