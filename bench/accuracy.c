@@ -31,6 +31,7 @@ typedef struct carom_handle {
   carom_world *world;
   carom_body_id *ids; /* scene index -> id */
   id_index *map;      /* sorted by id */
+  carom_joint_id *joints; /* scene joint index -> id */
   int count;
   double dt;
 } carom_handle;
@@ -49,6 +50,7 @@ static void carom_destroy (void *p)
   carom_world_destroy (h->world);
   free (h->ids);
   free (h->map);
+  free (h->joints);
   free (h);
 }
 
@@ -61,6 +63,7 @@ static void *carom_create (const bench_scene *s, const acc_settings *set)
     return NULL;
   h->ids = calloc ((size_t) s->count + 1, sizeof *h->ids);
   h->map = calloc ((size_t) s->count + 1, sizeof *h->map);
+  h->joints = calloc ((size_t) s->joint_count + 1, sizeof *h->joints);
   h->count = s->count;
   h->dt = set->dt;
   bench_carom_def (&def, s);
@@ -70,7 +73,7 @@ static void *carom_create (const bench_scene *s, const acc_settings *set)
   def.slop = set->slop;
   def.manifold_tolerance = set->manifold_tolerance;
   def.narrow_phase = set->narrow_phase ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
-  if (!h->ids || !h->map || carom_world_init (&h->world, &def) != CAROM_OK
+  if (!h->ids || !h->map || !h->joints || carom_world_init (&h->world, &def) != CAROM_OK
       || carom_world_set_continuous (h->world, set->continuous) != CAROM_OK)
     {
       carom_destroy (h);
@@ -82,6 +85,13 @@ static void *carom_create (const bench_scene *s, const acc_settings *set)
     if (st != CAROM_OK)
       {
         fprintf (stderr, "accuracy: body %d of %s: %s\n", failed, s->name, carom_status_string (st));
+        carom_destroy (h);
+        return NULL;
+      }
+    st = bench_carom_add_joints (h->world, s, h->ids, h->joints, &failed);
+    if (st != CAROM_OK)
+      {
+        fprintf (stderr, "accuracy: joint %d of %s: %s\n", failed, s->name, carom_status_string (st));
         carom_destroy (h);
         return NULL;
       }
@@ -129,8 +139,16 @@ static void carom_contacts (void *p, acc_contact_fn fn, void *user)
     }
 }
 
+/* carom_joint_get_reaction: the force on b averaged over the last update. */
+static void carom_joint_force (void *p, int joint, double *fx, double *fy)
+{
+  carom_handle *h = p;
+  carom_joint_get_reaction (h->world, h->joints[joint], fx, fy, NULL);
+}
+
 static const acc_engine carom_engine = {
   "carom", "see knob and value", carom_create, carom_step, carom_state, carom_contacts, carom_destroy,
+  carom_joint_force,
 };
 
 /* ------------------------------------------------------------ sweep */
@@ -154,7 +172,7 @@ static int settings_default (acc_settings *set)
   return 0;
 }
 
-#define N_MEASURES 10
+#define N_MEASURES 15 /* the 13 measures, then the 2 reference runs */
 
 typedef struct sweep {
   acc_settings def;
@@ -171,9 +189,10 @@ static void run_setting (sweep *w, const acc_settings *set, acc_result *keep)
 {
   int (*const measures[]) (const acc_engine *, const acc_settings *, acc_result *) = {
     acc_collision, acc_projectile, acc_bounce, acc_gas, acc_momentum, acc_pyramid, acc_rain, acc_tunnel,
+    acc_pendulum, acc_double_pendulum, acc_chain, acc_hanging, acc_limit,
   };
   int i, n = (int) (sizeof measures / sizeof measures[0]);
-  for (i = 0; i < N_MEASURES; ++i)
+  for (i = 0; i < n + 2; ++i)
     {
       acc_result r;
       int rc;

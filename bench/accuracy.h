@@ -1,11 +1,16 @@
 /* What accuracy costs in time: the measures, written once for every engine.
  *
  * Each engine (carom in bench/accuracy.c, Chipmunk 7 in
- * bench/peers/accuracy_chipmunk.c, Box2D 2.4 in bench/peers/accuracy_box2d.cpp)
- * supplies an acc_engine: build a world from a bench_scene (bench/scenes.h,
- * the one generator every bench uses), step it, read a body's state, list
- * the contact points. The measures (bench/accuracy_measures.c) only use that
- * table, so every engine is measured by the same code on the same scenes.
+ * bench/peers/accuracy_chipmunk.c, Box2D 2.4 in bench/peers/accuracy_box2d.cpp
+ * and Box2D v3 in bench/peers/accuracy_box2d3.c) supplies an acc_engine:
+ * build a world from a bench_scene (bench/scenes.h, the one generator every
+ * bench uses: its bodies and its revolute joints), step it, read a body's
+ * state, list the contact points, read a joint's force. The measures
+ * (bench/accuracy_measures.c) only use that table, so every engine is
+ * measured by the same code on the same scenes. Where a joint's anchors
+ * are is computed by the measures from the bodies' states (the points of
+ * the bodies that were at the joint at the start), the same way for every
+ * engine.
  *
  * Output: one line per measure and setting, key=value words, read by
  * bench/run-accuracy.sh:
@@ -47,8 +52,8 @@ typedef void (*acc_contact_fn) (void *user, int a, int b, double depth);
 typedef struct acc_engine {
   const char *name;
   const char *settings; /* the engine's own settings, for the doc */
-  /* Build a world from `s` (all of s->bodies, statics included). NULL on
-   * failure. */
+  /* Build a world from `s` (all of s->bodies, statics included, then
+   * s->joints in their order). NULL on failure. */
   void *(*create) (const bench_scene *s, const acc_settings *set);
   /* One step of set->dt; 0 on success. */
   int (*step) (void *world);
@@ -56,6 +61,10 @@ typedef struct acc_engine {
   /* Call fn for each touching contact point found by the last step. */
   void (*contacts) (void *world, acc_contact_fn fn, void *user);
   void (*destroy) (void *world);
+  /* The force joint `joint` (an index into s->joints) gave its body b in
+   * the last step (its impulse over the step, in the world frame; the
+   * measures use its magnitude). */
+  void (*joint_force) (void *world, int joint, double *fx, double *fy);
 } acc_engine;
 
 /* The results of one measure: up to ACC_MAX_KEYS named numbers. */
@@ -78,6 +87,14 @@ int acc_momentum (const acc_engine *e, const acc_settings *set, acc_result *r);
 int acc_pyramid (const acc_engine *e, const acc_settings *set, acc_result *r);
 int acc_rain (const acc_engine *e, const acc_settings *set, acc_result *r);
 int acc_tunnel (const acc_engine *e, const acc_settings *set, acc_result *r);
+/* Joints (revolute, each engine's defaults): a pendulum's period, a double
+ * pendulum's energy, a heavy chain's stretch, a hanging body's reaction, a
+ * limit's overshoot. */
+int acc_pendulum (const acc_engine *e, const acc_settings *set, acc_result *r);
+int acc_double_pendulum (const acc_engine *e, const acc_settings *set, acc_result *r);
+int acc_chain (const acc_engine *e, const acc_settings *set, acc_result *r);
+int acc_hanging (const acc_engine *e, const acc_settings *set, acc_result *r);
+int acc_limit (const acc_engine *e, const acc_settings *set, acc_result *r);
 
 /* Reference runs: body positions of `scene` ("pyramid" or "rain") at
  * ACC_SAMPLES equally spaced times up to ACC_REFERENCE_SECONDS, as x, y per
@@ -100,6 +117,13 @@ int acc_reference (const acc_engine *e, const acc_settings *set, const char *sce
 #define ACC_RAIN_SECONDS 5.0
 #define ACC_MOMENTUM_BODIES 200
 #define ACC_MOMENTUM_SECONDS 5.0
+#define ACC_PENDULUM_SECONDS 40.0
+#define ACC_DOUBLE_PENDULUM_SECONDS 10.0
+#define ACC_CHAIN_LINKS 40
+#define ACC_CHAIN_REST_SECONDS 5.0
+#define ACC_CHAIN_SWING_SECONDS 8.0
+#define ACC_HANGING_SECONDS 2.0
+#define ACC_LIMIT_SECONDS 3.0
 
 /* The size of a body, as above. */
 double acc_body_size (const bench_body *b);

@@ -18,6 +18,7 @@ double acc_body_size (const bench_body *b)
   return 2.0 * b->radius;
 }
 
+/* Room for `count` bodies and as many joints. */
 static int scene_alloc (bench_scene *s, const char *name, int count)
 {
   memset (s, 0, sizeof *s);
@@ -25,8 +26,12 @@ static int scene_alloc (bench_scene *s, const char *name, int count)
   s->density = 1.0;
   s->top = -1;
   s->bodies = calloc ((size_t) count, sizeof *s->bodies);
+  s->joints = calloc ((size_t) count, sizeof *s->joints);
   s->count = 0;
-  return s->bodies ? 0 : -1;
+  if (s->bodies && s->joints)
+    return 0;
+  bench_scene_free (s);
+  return -1;
 }
 
 static bench_body *scene_add (bench_scene *s, bench_shape shape, double a, double b, int is_static)
@@ -51,6 +56,16 @@ static bench_body *scene_add (bench_scene *s, bench_shape shape, double a, doubl
   if (!is_static)
     s->dynamic_count++;
   return p;
+}
+
+/* A revolute joint between bodies a (-1: the world) and b at (x, y). */
+static bench_joint *scene_join (bench_scene *s, int a, int b, double x, double y)
+{
+  bench_joint *j = &s->joints[s->joint_count++];
+  memset (j, 0, sizeof *j);
+  j->a = a, j->b = b;
+  j->x = x, j->y = y;
+  return j;
 }
 
 static int steps_for (double seconds, const acc_settings *set)
@@ -749,6 +764,340 @@ int acc_tunnel (const acc_engine *e, const acc_settings *set, acc_result *res)
   return rc;
 }
 
+/* ------------------------------------------------ joints */
+
+/* Every joint scene has gravity g = 10 down, no friction or restitution,
+ * and its bodies at rest at the start. */
+#define ACC_G 10.0
+
+/* K(k), the complete elliptic integral of the first kind, by the
+ * arithmetic-geometric mean. */
+static double elliptic_k (double k)
+{
+  double a = 1.0, b = sqrt (1.0 - k * k);
+  int i;
+  for (i = 0; i < 60; ++i)
+    {
+      double m = 0.5 * (a + b);
+      b = sqrt (a * b);
+      a = m;
+    }
+  return ACC_PI / (2.0 * a);
+}
+
+/* The joints' gaps added up: how far apart each joint's two anchors are
+ * now, the points of its bodies that were both at the joint at the start
+ * (bench_joint_gap, the benches' own measure, from the bodies' poses;
+ * `pose` holds 3 doubles per body). */
+static double joint_gaps (const acc_run *r, const bench_scene *s, double *pose)
+{
+  int i;
+  for (i = 0; i < s->count; ++i)
+    {
+      acc_state st;
+      r->e->state (r->w, i, &st);
+      pose[3 * i] = st.x, pose[3 * i + 1] = st.y, pose[3 * i + 2] = st.angle;
+    }
+  return bench_joint_gap (s, pose) * s->joint_count;
+}
+
+/* Kinetic plus potential energy of the dynamic bodies (y = 0: none). */
+static double mechanical (const acc_run *r, const bench_scene *s)
+{
+  double sum = 0.0;
+  int i;
+  for (i = 0; i < s->count; ++i)
+    {
+      acc_state st;
+      if (s->bodies[i].is_static)
+        continue;
+      r->e->state (r->w, i, &st);
+      sum += bench_kinetic (st.mass, st.inertia, st.vx, st.vy, st.spin) + st.mass * ACC_G * st.y;
+    }
+  return sum;
+}
+
+static int joint_scene (bench_scene *s, const char *name, int count)
+{
+  if (scene_alloc (s, name, count) < 0)
+    return -1;
+  s->gravity_y = -ACC_G;
+  return 0;
+}
+
+/* A small disc (radius 0.05) on a 1 m revolute joint to a fixed point at the
+ * origin, let go at rest theta0 from the vertical, for ACC_PENDULUM_SECONDS:
+ * the period from the upward zero crossings of its x (between two steps by
+ * linear interpolation: the swing is fastest there and its acceleration
+ * is 0), the relative error against 4 sqrt(I / (m g d)) K(sin(theta0 / 2)),
+ * I about the pivot from the engine's own mass and inertia. The amplitude
+ * at the end from the energy (cos theta = 1 - E / (m g d), E = kinetic +
+ * m g (y + d)) over theta0, minus 1. The rod's largest |length - 1| to
+ * *stretch, if larger. */
+static int pendulum_run (const acc_engine *e, const acc_settings *set, double degrees, double *period_err,
+                         double *amplitude, double *stretch, acc_result *res)
+{
+  const double d = 1.0, th0 = degrees * ACC_PI / 180.0;
+  bench_scene s;
+  bench_body *p;
+  acc_run r;
+  acc_state st;
+  double t = 0.0, first = -1.0, last = -1.0, lastx, exact, cosa;
+  int rc = 0, k, n = steps_for (ACC_PENDULUM_SECONDS, set), periods = 0;
+  *period_err = *amplitude = NAN;
+  if (joint_scene (&s, "pendulum", 1) < 0)
+    return -1;
+  p = scene_add (&s, BENCH_CIRCLE, 0.05, 0, 0);
+  p->x = d * sin (th0), p->y = -d * cos (th0);
+  scene_join (&s, -1, 0, 0.0, 0.0);
+  if (run_begin (&r, e, set, &s) < 0)
+    {
+      bench_scene_free (&s);
+      return -1;
+    }
+  e->state (r.w, 0, &st);
+  exact = 4.0 * sqrt ((st.inertia + st.mass * d * d) / (st.mass * ACC_G * d)) * elliptic_k (sin (0.5 * th0));
+  lastx = st.x;
+  for (k = 0; k < n && rc == 0; ++k)
+    {
+      double len;
+      rc = run_step (&r);
+      t += set->dt;
+      e->state (r.w, 0, &st);
+      len = fabs (hypot (st.x, st.y) - d) / d;
+      if (!(len <= *stretch))
+        *stretch = len;
+      if (lastx < 0.0 && st.x >= 0.0)
+        {
+          double tc = t - set->dt + set->dt * (-lastx) / (st.x - lastx);
+          if (first < 0.0)
+            first = tc;
+          else
+            ++periods;
+          last = tc;
+        }
+      lastx = st.x;
+    }
+  if (rc == 0 && periods > 0)
+    *period_err = (last - first) / periods / exact - 1.0;
+  else
+    rc = -1;
+  cosa = 1.0 - (bench_kinetic (st.mass, st.inertia, st.vx, st.vy, st.spin) + st.mass * ACC_G * (st.y + d))
+                   / (st.mass * ACC_G * d);
+  *amplitude = acos (cosa < -1.0 ? -1.0 : cosa > 1.0 ? 1.0 : cosa) / th0 - 1.0;
+  run_end (&r, res);
+  bench_scene_free (&s);
+  return rc;
+}
+
+/* The pendulum let go at 10 and at 90 degrees; the cost is the 90's run. */
+int acc_pendulum (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  double err10, err90, amp10, amp90, stretch = 0.0;
+  int rc;
+  result_init (res, "pendulum");
+  rc = pendulum_run (e, set, 10.0, &err10, &amp10, &stretch, res);
+  rc |= pendulum_run (e, set, 90.0, &err90, &amp90, &stretch, res);
+  result_put (res, "period_err_10", err10);
+  result_put (res, "period_err_90", err90);
+  result_put (res, "amplitude_10", amp10);
+  result_put (res, "amplitude_90", amp90);
+  result_put (res, "stretch", stretch);
+  res->ok = rc == 0;
+  return rc ? -1 : 0;
+}
+
+/* Two small discs (radius 0.05) on 1 m rods, a revolute joint at the pivot
+ * (the origin) and one at the first disc's centre, let go at rest with both
+ * rods horizontal, for ACC_DOUBLE_PENDULUM_SECONDS: the largest |E - E0|
+ * after any step, and E - E0 at the end, over the energy it can spend (E0
+ * less the energy hanging straight down, -m1 g - 2 m2 g). */
+int acc_double_pendulum (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  bench_scene s;
+  bench_body *p;
+  acc_run r;
+  acc_state a, b;
+  double e0, budget, worst = 0.0, end = NAN;
+  int rc = 0, k, n = steps_for (ACC_DOUBLE_PENDULUM_SECONDS, set);
+  result_init (res, "double_pendulum");
+  if (joint_scene (&s, "double_pendulum", 2) < 0)
+    return -1;
+  p = scene_add (&s, BENCH_CIRCLE, 0.05, 0, 0);
+  p->x = 1.0;
+  p = scene_add (&s, BENCH_CIRCLE, 0.05, 0, 0);
+  p->x = 2.0;
+  scene_join (&s, -1, 0, 0.0, 0.0);
+  scene_join (&s, 0, 1, 1.0, 0.0);
+  if (run_begin (&r, e, set, &s) < 0)
+    rc = -1;
+  else
+    {
+      e->state (r.w, 0, &a);
+      e->state (r.w, 1, &b);
+      e0 = mechanical (&r, &s);
+      budget = e0 - (-a.mass * ACC_G * 1.0 - b.mass * ACC_G * 2.0);
+      for (k = 0; k < n && rc == 0; ++k)
+        {
+          double de;
+          rc = run_step (&r);
+          de = fabs (mechanical (&r, &s) - e0) / budget;
+          if (!(de <= worst))
+            worst = de;
+        }
+      end = (mechanical (&r, &s) - e0) / budget;
+    }
+  result_put (res, "energy_err", rc ? NAN : worst);
+  result_put (res, "energy_end", rc ? NAN : end);
+  run_end (&r, res);
+  bench_scene_free (&s);
+  res->ok = rc == 0;
+  return rc;
+}
+
+/* ACC_CHAIN_LINKS links (0.25 x 0.05 boxes) on revolute joints at their
+ * ends, the first one's to a fixed point at the origin, holding a box of 100
+ * links' mass (a square of side sqrt(100 x 0.25 x 0.05), the same density)
+ * joined at the middle of its near side; hung straight down or laid out
+ * horizontal. The largest, after any step, of the joints' gaps added up,
+ * over the chain's length (10). */
+static int chain_run (const acc_engine *e, const acc_settings *set, int horizontal, double seconds, double *gap,
+                      acc_result *res)
+{
+  const double link = 0.25, thick = 0.05, side = sqrt (100.0 * link * thick);
+  double pose[3 * (ACC_CHAIN_LINKS + 1)];
+  bench_scene s;
+  acc_run r;
+  int i, k, rc = 0, n = steps_for (seconds, set);
+  *gap = NAN;
+  if (joint_scene (&s, "chain", ACC_CHAIN_LINKS + 1) < 0)
+    return -1;
+  for (i = 0; i <= ACC_CHAIN_LINKS; ++i)
+    {
+      double along = i < ACC_CHAIN_LINKS ? (i + 0.5) * link : ACC_CHAIN_LINKS * link + 0.5 * side;
+      bench_body *p = i < ACC_CHAIN_LINKS ? scene_add (&s, BENCH_BOX, link, thick, 0)
+                                          : scene_add (&s, BENCH_BOX, side, side, 0);
+      p->x = horizontal ? along : 0.0;
+      p->y = horizontal ? 0.0 : -along;
+      p->angle = horizontal || i == ACC_CHAIN_LINKS ? 0.0 : 0.5 * ACC_PI;
+      scene_join (&s, i - 1, i, horizontal ? i * link : 0.0, horizontal ? 0.0 : -i * link);
+    }
+  if (run_begin (&r, e, set, &s) < 0)
+    rc = -1;
+  else
+    {
+      double worst = 0.0;
+      for (k = 0; k < n && rc == 0; ++k)
+        {
+          double sum;
+          rc = run_step (&r);
+          sum = joint_gaps (&r, &s, pose) / (ACC_CHAIN_LINKS * link);
+          if (!(sum <= worst))
+            worst = sum;
+        }
+      if (rc == 0)
+        *gap = worst;
+    }
+  run_end (&r, res);
+  bench_scene_free (&s);
+  return rc;
+}
+
+/* The heavy chain at rest (hung straight, ACC_CHAIN_REST_SECONDS) and
+ * swinging down from horizontal (ACC_CHAIN_SWING_SECONDS, through the
+ * moment it snaps taut and on); the cost is the swing's run. */
+int acc_chain (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  double rest, swing;
+  int rc;
+  result_init (res, "chain");
+  rc = chain_run (e, set, 0, ACC_CHAIN_REST_SECONDS, &rest, res);
+  rc |= chain_run (e, set, 1, ACC_CHAIN_SWING_SECONDS, &swing, res);
+  result_put (res, "rest_gap", rest);
+  result_put (res, "swing_gap", swing);
+  res->ok = rc == 0;
+  return rc ? -1 : 0;
+}
+
+/* A 0.4 x 1 box hung at rest by a revolute joint at the middle of its top
+ * edge to a fixed point, for ACC_HANGING_SECONDS: the joint's force on it
+ * (its constraint force), |reaction| / (m g) - 1 at the end, and the largest
+ * | |reaction| / (m g) - 1 | over the last second. */
+int acc_hanging (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  bench_scene s;
+  bench_body *p;
+  acc_run r;
+  double end = NAN, worst = 0.0;
+  int rc = 0, k, n = steps_for (ACC_HANGING_SECONDS, set), from = n - steps_for (1.0, set);
+  result_init (res, "hanging");
+  if (joint_scene (&s, "hanging", 1) < 0)
+    return -1;
+  p = scene_add (&s, BENCH_BOX, 0.4, 1.0, 0);
+  p->y = -0.5;
+  scene_join (&s, -1, 0, 0.0, 0.0);
+  if (run_begin (&r, e, set, &s) < 0)
+    rc = -1;
+  else
+    for (k = 0; k < n && rc == 0; ++k)
+      {
+        acc_state st;
+        double fx = 0.0, fy = 0.0;
+        rc = run_step (&r);
+        e->state (r.w, 0, &st);
+        e->joint_force (r.w, 0, &fx, &fy);
+        end = hypot (fx, fy) / (st.mass * ACC_G) - 1.0;
+        if (k >= from && !(fabs (end) <= worst))
+          worst = fabs (end);
+      }
+  result_put (res, "reaction_err", rc ? NAN : end);
+  result_put (res, "reaction_worst", rc ? NAN : worst);
+  run_end (&r, res);
+  bench_scene_free (&s);
+  res->ok = rc == 0;
+  return rc;
+}
+
+/* A 1 x 0.1 bar on a revolute joint at one end to a fixed point, let go at
+ * rest horizontal, falls onto the joint's lower limit of -0.5 rad (upper
+ * +0.5), for ACC_LIMIT_SECONDS: the most it went past the limit, and how
+ * far past it it rests at the end (negative: short of it), in degrees. */
+int acc_limit (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  const double lower = -0.5;
+  bench_scene s;
+  bench_body *p;
+  bench_joint *j;
+  acc_run r;
+  acc_state st;
+  double lowest = 0.0, end = NAN;
+  int rc = 0, k, n = steps_for (ACC_LIMIT_SECONDS, set);
+  result_init (res, "limit");
+  if (joint_scene (&s, "limit", 1) < 0)
+    return -1;
+  p = scene_add (&s, BENCH_BOX, 1.0, 0.1, 0);
+  p->x = 0.5;
+  j = scene_join (&s, -1, 0, 0.0, 0.0);
+  j->enable_limit = 1, j->lower = lower, j->upper = 0.5;
+  if (run_begin (&r, e, set, &s) < 0)
+    rc = -1;
+  else
+    for (k = 0; k < n && rc == 0; ++k)
+      {
+        rc = run_step (&r);
+        e->state (r.w, 0, &st);
+        if (!(st.angle >= lowest))
+          lowest = st.angle;
+        end = st.angle;
+      }
+  result_put (res, "overshoot_deg", rc ? NAN : (lowest < lower ? lower - lowest : 0.0) * 180.0 / ACC_PI);
+  result_put (res, "rest_deg", rc ? NAN : (lower - end) * 180.0 / ACC_PI);
+  run_end (&r, res);
+  bench_scene_free (&s);
+  res->ok = rc == 0;
+  return rc;
+}
+
 /* ------------------------------------------------ reference runs */
 
 static int make_reference_scene (bench_scene *s, const char *scene)
@@ -834,6 +1183,7 @@ int acc_run_all (const acc_engine *e, const acc_settings *set)
 {
   int (*const measures[]) (const acc_engine *, const acc_settings *, acc_result *) = {
     acc_collision, acc_projectile, acc_bounce, acc_gas, acc_momentum, acc_pyramid, acc_rain, acc_tunnel,
+    acc_pendulum, acc_double_pendulum, acc_chain, acc_hanging, acc_limit,
   };
   size_t i;
   int rc = 0;

@@ -1,5 +1,6 @@
-/* carom on the benchmark scenes: builds a scene from scenes.c, steps it at
- * dt = 1/60 (warm-up, then timed steps) and prints one key=value line.
+/* carom on the benchmark scenes: builds a scene from scenes.c (its bodies,
+ * then its joints), steps it at dt = 1/60 (warm-up, then timed steps) and
+ * prints one key=value line.
  *
  * mode=mem instead counts the bytes carom holds, through a counting
  * allocator (carom_world_def.allocator): after building, after one
@@ -62,6 +63,12 @@ static int build (carom_world **world, const bench_scene *s, const bench_options
   if (st != CAROM_OK)
     {
       fprintf (stderr, "bench_carom: body %d: %s\n", failed, carom_status_string (st));
+      return -1;
+    }
+  st = bench_carom_add_joints (*world, s, ids, NULL, &failed);
+  if (st != CAROM_OK)
+    {
+      fprintf (stderr, "bench_carom: joint %d: %s\n", failed, carom_status_string (st));
       return -1;
     }
   return 0;
@@ -127,6 +134,7 @@ static int run_mem (const bench_options *o, const bench_scene *s, carom_body_id 
   memset (&none, 0, sizeof none);
   none.density = 1.0;
   frozen = *s;
+  frozen.joint_count = 0; /* joints need a dynamic body */
   frozen.bodies = malloc ((size_t) s->count * sizeof *s->bodies);
   if (!frozen.bodies)
     return -1;
@@ -216,6 +224,19 @@ int main (int argc, char **argv)
       r.escaped += bench_outside (&s, x, y) || !isfinite (x) || !isfinite (y);
     }
   r.contacts = carom_world_contact_count (w);
+  if (s.joint_count > 0)
+    {
+      double *pose = malloc ((size_t) s.count * 3 * sizeof *pose);
+      if (!pose)
+        return 1;
+      for (i = 0; i < s.count; ++i)
+        {
+          carom_body_get_position (w, ids[i], &pose[3 * i], &pose[3 * i + 1]);
+          carom_body_get_angle (w, ids[i], &pose[3 * i + 2]);
+        }
+      r.joint_gap = bench_joint_gap (&s, pose);
+      free (pose);
+    }
   if (rc)
     fprintf (stderr, "bench_carom: update failed\n");
   bench_report (&o, &s, &r);

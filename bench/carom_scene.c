@@ -37,3 +37,30 @@ carom_status bench_carom_add_bodies (carom_world *world, const bench_scene *s, c
     }
   return CAROM_OK;
 }
+
+carom_status bench_carom_add_joints (carom_world *world, const bench_scene *s, const carom_body_id *ids,
+                                     carom_joint_id *joints, int *failed)
+{
+  int i;
+  for (i = 0; i < s->joint_count; ++i)
+    {
+      const bench_joint *j = &s->joints[i];
+      carom_joint_def jd;
+      carom_status st;
+      carom_joint_def_init (&jd, sizeof jd);
+      jd.type = CAROM_JOINT_REVOLUTE;
+      jd.a = j->a < 0 ? CAROM_NULL_BODY : ids[j->a];
+      jd.b = ids[j->b];
+      jd.x = j->x, jd.y = j->y;
+      jd.enable_limit = j->enable_limit;
+      jd.lower = j->lower, jd.upper = j->upper;
+      st = carom_world_add_joint (world, &jd, joints ? &joints[i] : NULL);
+      if (st != CAROM_OK)
+        {
+          if (failed)
+            *failed = i;
+          return st;
+        }
+    }
+  return CAROM_OK;
+}

@@ -2,10 +2,11 @@
 # Run the accuracy sweep and write docs/accuracy.md and docs/accuracy.png.
 # usage: bench/run-accuracy.sh ACC_DIR [OUTPUT.md]   (make bench-accuracy calls it)
 #
-# ACC_DIR holds accuracy (carom), and accuracy_chipmunk / accuracy_box2d when
-# the peers were built. Every binary runs ACCURACY_REPEATS times (default 3),
-# interleaved (carom, chipmunk, box2d, carom, ...); the errors are the same in
-# every round (all three engines are deterministic); the times are the
+# ACC_DIR holds accuracy (carom), and accuracy_chipmunk / accuracy_box2d /
+# accuracy_box2d3 when the peers were built. Every binary runs
+# ACCURACY_REPEATS times (default 3), interleaved (carom, chipmunk, box2d,
+# box2d3, carom, ...); the errors are the same in every round (every engine
+# is deterministic); the times are the
 # fastest of the rounds (other work on the machine only ever adds time).
 # Raw outputs and the plot's data stay in ACC_DIR.
 set -eu
@@ -67,11 +68,24 @@ with its debug assertions on).
 ## How it is measured
 
 * One program per engine (bench/accuracy.c for carom,
-  bench/peers/accuracy_chipmunk.c, bench/peers/accuracy_box2d.cpp) runs the same
-  measures (bench/accuracy_measures.c) through a small table of engine calls. The
+  bench/peers/accuracy_chipmunk.c, bench/peers/accuracy_box2d.cpp,
+  bench/peers/accuracy_box2d3.c) runs the same measures
+  (bench/accuracy_measures.c) through a small table of engine calls. The
   pyramid, rain and gas come from the benches' one scene generator
   (bench/scenes.c); the peers' worlds are built by the peer benches' own code
-  (their \`add_shape\` / \`add_fixture\`).
+  (their \`add_shape\` / \`add_fixture\`, and \`create_joints\` /
+  \`add_joints\` for the joints).
+* **Joints** (the pendulum, double pendulum, heavy chain, hanging and limit
+  sections): every joint is a revolute joint given as a point in world
+  coordinates at the start (\`bench_joint\`, bench/scenes.h), built by each
+  engine's own calls at its defaults: carom's \`CAROM_JOINT_REVOLUTE\`; Box2D v3's
+  soft revolute joint (constraint hertz 60, damping ratio 2), to a static body
+  without shapes for a fixed point; Box2D 2.4's revolute joint; Chipmunk's pivot
+  joint, with a rotary limit joint for a limit. Joined bodies do not collide.
+  Where a joint's two anchors are is computed by the measures from the bodies'
+  positions and angles (the points of the two bodies that were at the joint at
+  the start), the same code for every engine; only the joint's force is asked of
+  the engine. Gravity 10 down in every joint case.
 * **carom settings**: one knob at a time from the defaults ($DEFAULTS):
   substeps 1, 2, 4, 8, 16; iterations 1, 2, 4, 8; position_correction 0.05, 0.1,
   0.2, 0.4, 0.8; slop 0.001, 0.005, 0.01, 0.02; manifold_tolerance 0, 0.001, 0.01,
@@ -98,7 +112,9 @@ with its debug assertions on).
 * **Caps** (to keep the sweep within minutes): gas 500 polygons for 2000/60 s
   (2000 steps at 1/60); pyramid 210 boxes for 10 s; rain 500 polygons (not the
   bench's 2000) for 5 s, by when every row has landed; free-space collisions 200
-  polygons for 5 s; reference runs 2 s. The whole sweep took $((END - START)) s for
+  polygons for 5 s; reference runs 2 s; pendulum 40 s at each release, double
+  pendulum 10 s, heavy chain 5 s at rest and 8 s swinging, hanging box 2 s,
+  limit 3 s. The whole sweep took $((END - START)) s for
   $REPEATS rounds.
 EOF
 } >"$OUT"
@@ -133,7 +149,7 @@ function label (row,    e, k, v) {
   return k " = " v
 }
 BEGIN {
-  ORDER = "collision projectile bounce gas momentum pyramid rain tunnel ref_pyramid ref_rain"
+  ORDER = "collision projectile bounce gas momentum pyramid rain tunnel pendulum double_pendulum chain hanging limit ref_pyramid ref_rain"
   T["collision"] = "Two-body elastic collision (closed form, eq. 3.23)"
   D["collision"] = "Two equal 1 × 1 boxes head-on (they must swap velocities), and a spinning 1 × 0.6 box hitting a spinning pentagon with a corner, off-centre (e = 1, no friction, no gravity). The exact answer is computed in the bench: the time of first contact by scanning and bisection of the free flight, its point and normal, then the eq. 3.23 impulse. Error: sqrt(Σ |Δv|² + (ρ Δω)²) over the closing speed, ρ the radius of gyration, against the exact velocities and spins after the impact; energy change: kinetic energy after over before, minus 1."
   L["collision"] = "headon_err:head-on error,offcentre_err:off-centre error,energy_change:energy change (off-centre)"
@@ -158,6 +174,21 @@ BEGIN {
   T["tunnel"] = "Tunnelling"
   D["tunnel"] = "20 circles (diameter 0.1 to 0.2) and 20 boxes (0.1 × 0.1, random angles) at 50 to 300 m/s against a static wall 0.1 thick (at 300 m/s a body moves 50 wall thicknesses per 1/60 s step), e = 0, 0.5 s: bodies that end beyond the wall."
   L["tunnel"] = "tunnelled:tunnelled (of 40),circles:circles,boxes:boxes"
+  T["pendulum"] = "Pendulum period (revolute joint)"
+  D["pendulum"] = "A small disc (radius 0.05) on a 1 m revolute joint to a fixed point (the joint at the pivot, 1 m from the disc\047s centre), let go at rest 10° and 90° from the vertical, 40 s: the period from the upward zero crossings of the disc\047s x (linear between steps: the swing is fastest there, its acceleration 0) against the exact 4 √(I / (m g d)) K(sin(θ0/2)), I about the pivot from the engine\047s own mass and inertia; signed relative error. Amplitude: the swing\047s amplitude at the end (from its energy) over θ0, minus 1 (negative: the joint took energy). Rod stretch: the largest |distance to the pivot − 1| after any step of either run. The cost is the 90° run\047s."
+  L["pendulum"] = "period_err_10:period error 10°,period_err_90:period error 90°,amplitude_10:amplitude change 10°,amplitude_90:amplitude change 90°,stretch:rod stretch"
+  T["double_pendulum"] = "Double pendulum energy (revolute joints)"
+  D["double_pendulum"] = "Two small discs (radius 0.05) on 1 m rods, a revolute joint at the pivot and one at the first disc\047s centre, let go at rest with both rods horizontal, no friction, 10 s (the motion is chaotic: the engines\047 paths part within seconds; the energy must not). The largest |E − E0| after any step, and E − E0 at the end (signed), over the energy it can spend: E0 less the energy hanging straight down."
+  L["double_pendulum"] = "energy_err:largest energy error,energy_end:energy change at the end"
+  T["chain"] = "Heavy chain: 40 links holding 100 links\047 mass"
+  D["chain"] = "40 links (0.25 × 0.05 boxes) on revolute joints at their ends, the first one\047s to a fixed point, holding a box of 100 links\047 mass (a square of side √1.25 of the same density) by the middle of its near side. Gap: the distance between each joint\047s two anchors, added up over the 41 joints, over the chain\047s length (10); the largest after any step. At rest: hung straight down, 5 s. Swinging: let go horizontal, 8 s (it swings down, snaps taut and swings on). The cost is the swing\047s run."
+  L["chain"] = "rest_gap:gap at rest,swing_gap:gap swinging"
+  T["hanging"] = "Hanging reaction (revolute joint)"
+  D["hanging"] = "A 0.4 × 1 box hung at rest from a fixed point by a revolute joint at the middle of its top edge, 2 s: the joint\047s force on the box (carom_joint_get_reaction; Box2D v3 b2Joint_GetConstraintForce; Box2D 2.4 GetReactionForce; Chipmunk the pivot\047s impulse over the step, a magnitude), |reaction| / (m g) − 1 at the end, and the largest ||reaction| / (m g) − 1| over the last second."
+  L["hanging"] = "reaction_err:reaction error at the end,reaction_worst:largest reaction error (last second)"
+  T["limit"] = "Revolute limit overshoot"
+  D["limit"] = "A 1 × 0.1 bar on a revolute joint at one end to a fixed point, let go at rest horizontal, falls onto the joint\047s lower limit of −0.5 rad (upper +0.5), 3 s: the most it went past the limit, and how far past the limit it rests at the end (negative: short of it), in degrees."
+  L["limit"] = "overshoot_deg:overshoot (degrees),rest_deg:past the limit at rest (degrees)"
   T["ref_pyramid"] = "Pyramid against a reference run (2 s)"
   D["ref_pyramid"] = "carom at dt 1/120, 32 substeps, 50 iterations (other knobs at their defaults) is the ground truth; the RMS over the 210 boxes and over t = 0.5, 1, 1.5, 2 s of |position − reference| over the body size. The first row compares the reference with itself at 16 substeps: how well converged it is. carom only (the peers model contacts differently, so a distance from carom\047s reference would not be an error)."
   L["ref_pyramid"] = "rms:RMS distance / size"
@@ -198,6 +229,14 @@ END {
     }
     if (m in refself)
       printf "\nThe reference at half its resolution is %s from the reference: differences of that order are the reference\047s own uncertainty, not errors of a setting.\n", num(refself[m])
+    if (m == "chain") {
+      lost = ""
+      for (row = 1; row <= nrow; ++row)
+        if (R_measure[row] == m && !R_dup[row] && (V[row, "rest_gap"] + 0 > 1 || V[row, "swing_gap"] + 0 > 1))
+          lost = lost (lost == "" ? "" : ", ") label(row)
+      if (lost != "")
+        printf "\nA gap above 1 is more than the chain\047s length: the chain came apart and the box fell away (the gap grows for as long as the run lasts), in %s.\n", lost
+    }
     if (m == "pyramid")
       for (row = 1; row <= nrow; ++row)
         if (R_measure[row] == m && R_engine[row] == "box2d" && V[row, "top_sink"] < 0)
@@ -205,13 +244,16 @@ END {
   }
 
   # ---- the needs: one error each, for the plot and the advice
-  NN = split ("collision:offcentre_err:off-centre collision velocity error;bounce:box_err:bounce height error (box);gas:energy_drift:gas energy drift (absolute) over 2000/60 s;pyramid:top_drift:pyramid top box moved / size (10 s);rain:pen_p99:rain 99th-pct penetration / size;ref_pyramid:rms:pyramid RMS distance from reference / size", NEED, ";")
+  NN = split ("collision:offcentre_err:off-centre collision velocity error;bounce:box_err:bounce height error (box);gas:energy_drift:gas energy drift (absolute) over 2000/60 s;pyramid:top_drift:pyramid top box moved / size (10 s);rain:pen_p99:rain 99th-pct penetration / size;ref_pyramid:rms:pyramid RMS distance from reference / size;pendulum:period_err_90:pendulum period error at 90 degrees (absolute);double_pendulum:energy_err:double pendulum largest energy error / budget;chain:swing_gap:heavy chain swinging, joint gaps / length", NEED, ";")
   NNAME[1] = "Collisions that spin off right (off-centre impacts)"
   NNAME[2] = "Bounces of the right height"
   NNAME[3] = "Elastic scenes that keep their energy"
   NNAME[4] = "Stacks that stand still"
   NNAME[5] = "Piles without visible overlap"
   NNAME[6] = "Trajectories close to the converged answer (stacks)"
+  NNAME[7] = "Pendulums that keep time (joints)"
+  NNAME[8] = "Jointed motion that keeps its energy"
+  NNAME[9] = "Joints that hold a heavy load"
   nknob = split ("substeps iterations position_correction slop manifold_tolerance narrow_phase continuous dt", KN, " ")
   for (n = 1; n <= NN; ++n) {
     split (NEED[n], f, ":"); m = f[1]; k = f[2]; title = f[3]
@@ -226,7 +268,7 @@ END {
     for (row = 1; row <= nrow; ++row)
       if (R_measure[row] == m && !R_dup[row] && !R_failed[row] && (R_engine[row] != "carom" || R_knob[row] == "preset" || R_knob[row] == "default")) {
         nm2 = R_engine[row] == "carom" ? (R_knob[row] == "default" ? "balanced" : R_value[row]) : (R_engine[row] == "box2d" ? "Box2D 2.4" : R_engine[row] == "box2d3" ? "Box2D v3" : "Chipmunk")
-        printf "%g %g %s\n", MFm[row], (absv (V[row, k]) > 1e-12 ? absv (V[row, k]) : 1e-12), nm2 >file
+        printf "%g %g \"%s\"\n", MFm[row], (absv (V[row, k]) > 1e-12 ? absv (V[row, k]) : 1e-12), nm2 >file
       }
     close (file)
     print title >(plotdir "/need" n ".title"); close (plotdir "/need" n ".title")
@@ -280,9 +322,9 @@ END {
 if command -v gnuplot >/dev/null 2>&1; then
   GP=$PLOT/accuracy.gp
   {
-    echo "set terminal pngcairo size 1500,1000 font 'sans,9'"
+    echo "set terminal pngcairo size 1500,1500 font 'sans,9'"
     echo "set output '$PNG'"
-    echo "set multiplot layout 2,3 title 'carom: error against cost, one curve per knob (others at their defaults); presets and peers as labelled points'"
+    echo "set multiplot layout 3,3 title 'carom: error against cost, one curve per knob (others at their defaults); presets and peers as labelled points'"
     echo "set logscale xy; set grid; set key top right font 'sans,7'; set format y '10^{%L}'"
     echo "set xlabel 'ms of wall time per 1/60 s simulated'"
     n=1

@@ -36,6 +36,7 @@ scene_args () {
   pyramid) echo "scene=pyramid warmup=60 steps=540" ;;
   rain) echo "scene=rain warmup=60 steps=540" ;;
   gas) echo "scene=gas warmup=60 steps=540" ;;
+  chains) echo "scene=chains warmup=60 steps=540" ;;
   esac
 }
 
@@ -61,7 +62,7 @@ LOAD_START=$(cut -d' ' -f1-3 /proc/loadavg)
 # ------------------------------------------------------------ comparison
 r=1
 while [ "$r" -le "$REPEATS" ]; do
-  for s in pyramid rain gas; do
+  for s in pyramid rain gas chains; do
     for e in $ENGINES; do
       # shellcheck disable=SC2046
       line=$(run "$e" $(scene_args "$s")) || line=""
@@ -82,7 +83,7 @@ first () { pick "$1" "$2" | head -n 1; }
 CONFIGS="1,1 2,1 4,1 4,2 8,1 8,2"
 r=1
 while [ "$r" -le "$REPEATS" ]; do
-  for s in pyramid rain gas; do
+  for s in pyramid rain gas chains; do
     for cfg in $CONFIGS; do
       # shellcheck disable=SC2046
       run carom $(scene_args "$s") substeps="${cfg%,*}" iterations="${cfg#*,}" >>"$RAW/settings.txt" || true
@@ -110,7 +111,7 @@ echo "run-bench: scaling done" >&2
 
 # ------------------------------------------------------------ memory
 : >"$RAW/memory.txt"
-for s in pyramid rain gas; do
+for s in pyramid rain gas chains; do
   # shellcheck disable=SC2046
   "$B/bench_carom" $(scene_args "$s") mode=mem | grep '^engine=' >>"$RAW/memory.txt" || true
 done
@@ -131,10 +132,11 @@ echo "run-bench: memory and broad phase done" >&2
 PROFILE=no
 if command -v valgrind >/dev/null 2>&1 && command -v callgrind_annotate >/dev/null 2>&1; then
   PROFILE=yes
-  for s in pyramid rain; do
+  for s in pyramid rain chains; do
     case $s in
     pyramid) st=120 ;;
     rain) st=300 ;;
+    chains) st=120 ;;
     esac
     valgrind -q --tool=callgrind --callgrind-out-file="$B/callgrind.$s.out" \
       --toggle-collect=carom_world_update "$B/bench_carom" scene="$s" warmup=0 steps="$st" >/dev/null 2>&1 || PROFILE=no
@@ -219,7 +221,7 @@ summary_table () {
   done
   echo "$h"
   echo "$d"
-  for s in pyramid rain gas; do
+  for s in pyramid rain gas chains; do
     cm=$(med_ms carom "$s")
     row="| $s | $cm |"
     for e in $ENGINES; do
@@ -245,6 +247,45 @@ scene_table () {
   done
 }
 
+# The chains: ms/step and its cost per joint, and how far the joints came
+# apart (joint gap: the mean distance between a joint's two anchors at the
+# end, bench_joint_gap in bench/scenes.c).
+joint_table () {
+  s=$1
+  cm=$(med_ms carom "$s")
+  echo "| engine | settings | ms/step (median of $REPEATS) | all rounds | carom / engine | us per joint per step | mean joint gap | escaped | contact points |"
+  echo "|---|---|---:|---|---:|---:|---:|---:|---:|"
+  for e in $ENGINES; do
+    l=$(first "$e" "$s")
+    [ -n "$l" ] || continue
+    m=$(med_ms "$e" "$s")
+    all=$(pick "$e" "$s" | while read -r x; do key ms_per_step "$x"; done | tr '\n' ' ' | sed 's/ $//')
+    echo "| $(engine_name "$e") | $(key settings "$l" | tr ',' ' ') | $m | $all | $(ratio "$cm" "$m") | $(per_joint_us "$m" "$(key joints "$l")") | $(key joint_gap "$l") | $(key escaped "$l") | $(key contacts "$l") |"
+  done
+}
+per_joint_us () { awk -v m="$1" -v n="$2" 'BEGIN { if (m + 0 > 0 && n + 0 > 0) printf "%.3f", 1000 * m / n; else print "-" }'; }
+per_joint_ir () { awk -v a="$1" -v st="$2" -v n="$3" 'BEGIN { if (a + 0 > 0 && n + 0 > 0) printf "%.0f", a / st / n; else print "-" }'; }
+CHAIN_JOINTS=$(key joints "$(first carom chains)")
+CHAIN_ST=120
+# the joints' own stages in carom (lib/solver.c calls them), inclusive
+JOINT_STAGES="joint_prepare joint_mark_bodies gravity_joint_hold joint_warm_start joint_solve joint_project gravity_joint_kick joint_sum_reaction joint_finish"
+joint_share () { for f in $JOINT_STAGES; do incl "$1" "$f"; done | awk '{ t += $1 } END { printf "%.1f", t }'; }
+
+# Cost per joint, carom beside Box2D v3: time, and instructions when the
+# profile ran.
+per_joint_table () {
+  echo "| engine | ms/step | us per joint per step | instructions per step | instructions per joint per step |"
+  echo "|---|---:|---:|---:|---:|"
+  for e in carom box2d3; do
+    case " $ENGINES " in *" $e "*) ;; *) continue ;; esac
+    m=$(med_ms "$e" chains)
+    if [ "$e" = carom ]; then f=$B/callgrind.chains.out; else f=$B/callgrind.box2d3.chains.out; fi
+    ir=""
+    [ "$PROFILE" = yes ] && ir=$(total_ir "$f")
+    echo "| $(engine_name "$e") | $m | $(per_joint_us "$m" "$CHAIN_JOINTS") | $(per_step "$ir" "$CHAIN_ST") | $(per_joint_ir "$ir" "$CHAIN_ST" "$CHAIN_JOINTS") |"
+  done
+}
+
 {
   cat <<EOF
 # carom performance
@@ -260,7 +301,7 @@ libbox2d-dev $(pkgv libbox2d-dev) (Debian packages)${B3_PEER}.
 ## How it is measured
 
 * One scene generator (bench/scenes.c) gives every engine the same bodies:
-  shape, size, pose, velocity, density 1. The three scenes:
+  shape, size, pose, velocity, density 1, and the same joints. The four scenes:
   * **pyramid**: 20 rows of 1 x 1 boxes (210) on a static ground box, gravity -10,
     friction 0.6, restitution 0.
   * **rain**: 2000 polygons (boxes, triangles, pentagons, hexagons, size 0.5 to 1,
@@ -269,6 +310,13 @@ libbox2d-dev $(pkgv libbox2d-dev) (Debian packages)${B3_PEER}.
   * **gas**: 500 such polygons on a jittered grid (not touching) with random
     velocities \|v\| <= 5 in a closed box of static walls, no gravity,
     restitution 1, friction 0.
+  * **chains**: 25 chains of 40 links (0.25 x 0.05 boxes, 1000 bodies) on revolute
+    joints at their ends, the first link's to a fixed point (1000 joints), each
+    laid straight at 45 degrees below the horizontal and let go, on a grid 24
+    apart so that no two chains meet (links of one chain may), gravity -10,
+    friction 0.6. Every engine's revolute joint at its defaults, joined bodies
+    not colliding (Box2D v3: soft joints, constraint hertz 60, damping ratio 2;
+    Chipmunk: pivot joints).
 * dt = 1/60, 60 warm-up steps, then 540 timed steps;
   \`clock_gettime(CLOCK_MONOTONIC)\` around the step calls only. The accuracy
   figures are read after all 600 steps (10 s):
@@ -276,7 +324,11 @@ libbox2d-dev $(pkgv libbox2d-dev) (Debian packages)${B3_PEER}.
   * **escaped**: bodies whose centre ended outside the container (tunnelled or thrown out);
   * **energy drift**: kinetic energy at the end over the start, minus 1 (gas; e = 1
     should keep it near 0);
-  * **contact points**: touching points at the end, as each engine counts them.
+  * **contact points**: touching points at the end, as each engine counts them;
+  * **mean joint gap** (chains): the distance between a joint's two anchors at
+    the end, averaged over the joints: the points of its two bodies that were at
+    the joint at the start, carried with the bodies (the same code for every
+    engine, bench_joint_gap in bench/scenes.c); the links are 0.25 long.
 * Rounds: the engines run interleaved ($ENGINES), $REPEATS rounds; the
   table gives the median, then every round. **carom / engine** > 1 means carom is slower.
 * Build: every bench is compiled by the same compiler with \`-O2 -g\` (\`\$(OPT)\`);
@@ -326,6 +378,17 @@ $(scene_table rain)
 
 $(scene_table gas)
 
+## Chains (1000 links, 1000 revolute joints)
+
+$(joint_table chains)
+
+Cost per joint, carom beside Box2D v3: the median ms/step above over the
+$CHAIN_JOINTS joints, and the instructions callgrind counted in the step calls
+(\`carom_world_update\`, \`b2World_Step\`) over the first $CHAIN_ST steps from the
+start$(if [ "$PROFILE" = yes ]; then echo ""; else echo " (valgrind was missing: no instruction counts)"; fi).
+
+$(per_joint_table)
+
 Targets (Box2D v3 / Chipmunk 7, measured by others on this machine): pyramid
 0.15 / 0.39 ms, rain 1.3 / 3.6 ms, gas 0.29 / 0.16 ms. $(if [ "$HAVE_B3" = yes ]; then
   echo "Box2D v3 in this run (commit \`$(b3v commit)\`): pyramid $(med_ms box2d3 pyramid), rain $(med_ms box2d3 rain), gas $(med_ms box2d3 gas) ms."
@@ -339,8 +402,8 @@ Median of $REPEATS rounds, the settings interleaved within each scene (not with
 the other engines, so compare with the carom row above with care). The defaults
 are substeps 4, iterations 1.
 
-| substeps | iterations | pyramid ms/step | pyramid top drift | rain ms/step | rain escaped | gas ms/step | gas energy drift |
-|---:|---:|---:|---:|---:|---:|---:|---:|
+| substeps | iterations | pyramid ms/step | pyramid top drift | rain ms/step | rain escaped | gas ms/step | gas energy drift | chains ms/step | chains mean joint gap |
+|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|
 EOF
   for cfg in $CONFIGS; do
     sel () { grep " scene=$1 " "$RAW/settings.txt" | grep "settings=substeps=${cfg%,*},iterations=${cfg#*,}\$" || true; }
@@ -348,7 +411,8 @@ EOF
     p=$(sel pyramid | head -n 1)
     ra=$(sel rain | head -n 1)
     g=$(sel gas | head -n 1)
-    echo "| ${cfg%,*} | ${cfg#*,} | $(sms pyramid) | $(key top_drift "$p") | $(sms rain) | $(key escaped "$ra") | $(sms gas) | $(key energy_drift "$g") |"
+    ch=$(sel chains | head -n 1)
+    echo "| ${cfg%,*} | ${cfg#*,} | $(sms pyramid) | $(key top_drift "$p") | $(sms rain) | $(key escaped "$ra") | $(sms gas) | $(key energy_drift "$g") | $(sms chains) | $(key joint_gap "$ch") |"
   done
   cat <<EOF
 
@@ -379,6 +443,7 @@ apart, on a copy of the scene with every body static. Bytes per contact point: t
 stepped world less the built world and its broad phase, over the contact points at
 the end. Arrays grow by doubling and the contacts are double buffered (this and
 last step's, for warm starting), so these are bytes held, not bytes used.
+The chains' bytes per body hold their joints too (one joint per link).
 
 | scene | bodies | steps | bytes per body | broad phase bytes per body | contact points | bytes per contact point | peak bytes |
 |---|---:|---:|---:|---:|---:|---:|---:|
@@ -418,14 +483,14 @@ EOF
 ## Profile (callgrind, instructions)
 
 \`valgrind --tool=callgrind --toggle-collect=carom_world_update\` on bench_carom:
-pyramid for 120 steps, rain (2000) for 300 steps from the start. Percentages are
+pyramid for 120 steps, rain (2000) for 300 steps, chains for $CHAIN_ST steps from the start. Percentages are
 of the instructions executed inside carom_world_update; static functions inlined
 by -O2 count in their caller (drift and substep in carom_world_update, the sorts
 in broadphase_update). Instruction counts do not show cache misses. Raw profiles:
 \`$B/callgrind.*.out\` and \`$B/profile-*.txt\` (not in git).
 
 EOF
-    for s in pyramid rain; do
+    for s in pyramid rain chains; do
       inc=$B/profile-$s-inclusive.txt
       exc=$B/profile-$s-exclusive.txt
       det=$(incl "$inc" contacts_update)
@@ -434,7 +499,7 @@ EOF
       sol=$(incl "$inc" solver_step)
       echo "### $s"
       echo
-      st=120; [ "$s" = rain ] && st=300
+      st=120; [ "$s" = rain ] && st=300; [ "$s" = chains ] && st=$CHAIN_ST
       ir_c=$(total_ir "$B/callgrind.$s.out")
       ir_b=$(total_ir "$B/callgrind.box2d3.$s.out")
       if [ -n "$ir_b" ]; then
@@ -444,6 +509,10 @@ EOF
       fi
       echo
       echo "Stages: detection $det% (of which the broad phase's own sweep and sort $bro%, the narrow phase and contact matching $nar%), solver $sol%, the rest (integration, gravity, bookkeeping) $(awk -v a="$det" -v b="$sol" 'BEGIN { printf "%.1f", 100 - a - b }')%."
+      if [ "$s" = chains ]; then
+        echo
+        echo "Of the solver, the joints' stages (lib/solver.c's joint_* and gravity_joint_* calls) take $(joint_share "$inc")%: the velocity passes (joint_solve, the solve and relax passes of each sub-step) $(incl "$inc" joint_solve)%, the position projections after each sub-step's move (joint_project) $(incl "$inc" joint_project)%; both run the direct solve of the joint trees (lib/joint_tree.c), whose functions lead the table below."
+      fi
       echo
       echo "| function | inclusive % | exclusive % |"
       echo "|---|---:|---:|"
@@ -508,6 +577,27 @@ EOF
   `sleep on` rows and docs/effects.md) a settled pyramid costs carom under a
   tenth of its awake time.
 EOF
+  if [ "$HAVE_B3" = yes ] && [ -n "$CHAIN_JOINTS" ]; then
+    cm=$(med_ms carom chains)
+    b3=$(med_ms box2d3 chains)
+    share=""
+    if [ "$PROFILE" = yes ]; then
+      share=" (the joints'
+  stages are $(joint_share "$B/profile-chains-inclusive.txt")% of its instructions in the chains profile above)"
+    fi
+    cat <<EOF
+- **Joints** (the chains) cost carom $(per_joint_us "$cm" "$CHAIN_JOINTS") us per joint per step and Box2D v3
+  $(per_joint_us "$b3" "$CHAIN_JOINTS") (carom / Box2D v3 $(ratio "$cm" "$b3")). Box2D v3 solves each joint on its own,
+  soft, once per pass; carom solves every rigid row of a tree of joints
+  together, exactly (lib/joint_tree.c), in each velocity pass (the solve
+  and the relax pass of each sub-step), and projects the positions after
+  each sub-step's move, which takes the block system of the tree to be set
+  up and factored${share}.
+  What that buys is measured in docs/accuracy.md (the pendulum, double
+  pendulum, heavy chain and limit sections) and in the mean joint gap
+  column of the chains table above.
+EOF
+  fi
 } >"$OUT.tmp"
 mv "$OUT.tmp" "$OUT"
 echo "run-bench: wrote $OUT in ${ELAPSED} s" >&2

@@ -1,4 +1,4 @@
-/* The three benchmark scenes as plain data, and the small harness the
+/* The four benchmark scenes as plain data, and the small harness the
  * engines' benches share (see scenes.h). */
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
 #include "scenes.h"
@@ -228,6 +228,48 @@ static int make_gas (bench_scene *s, int n)
   return 0;
 }
 
+/* Chains of BENCH_CHAIN_LINKS links, each hung from its own fixed point on
+ * a square grid and laid straight at 45 degrees below the horizontal, to
+ * the right: joint 0 of a chain holds its first link to the world, joint k
+ * its links k - 1 and k at their shared end. */
+static int make_chains (bench_scene *s, int n)
+{
+  const double link = 0.25, thick = 0.05, spacing = 24.0, c = cos (-0.25 * BENCH_PI), sn = sin (-0.25 * BENCH_PI);
+  int chains = n / BENCH_CHAIN_LINKS > 0 ? n / BENCH_CHAIN_LINKS : 1, cols = (int) ceil (sqrt ((double) chains));
+  int rows = (chains + cols - 1) / cols, i, k, count = chains * BENCH_CHAIN_LINKS;
+  if (alloc_bodies (s, count) < 0)
+    return -1;
+  s->joints = calloc ((size_t) count, sizeof *s->joints);
+  if (!s->joints)
+    return -1;
+  s->gravity_y = -10.0;
+  s->friction = 0.6;
+  for (i = 0; i < chains; ++i)
+    {
+      double px = (i % cols) * spacing, py = -(i / cols) * spacing;
+      for (k = 0; k < BENCH_CHAIN_LINKS; ++k)
+        {
+          int index = i * BENCH_CHAIN_LINKS + k;
+          bench_body *b = &s->bodies[index];
+          bench_joint *j = &s->joints[index];
+          b->shape = BENCH_BOX;
+          b->w = link, b->h = thick;
+          b->radius = 0.5 * sqrt (link * link + thick * thick);
+          b->x = px + (k + 0.5) * link * c, b->y = py + (k + 0.5) * link * sn;
+          b->angle = -0.25 * BENCH_PI;
+          j->a = k == 0 ? -1 : index - 1;
+          j->b = index;
+          j->x = px + k * link * c, j->y = py + k * link * sn;
+        }
+    }
+  s->count = count;
+  s->dynamic_count = count;
+  s->joint_count = count;
+  s->in_lo_x = -0.5 * spacing, s->in_hi_x = (cols - 0.5) * spacing;
+  s->in_lo_y = -(rows - 0.5) * spacing, s->in_hi_y = 0.5 * spacing;
+  return 0;
+}
+
 int bench_scene_make (bench_scene *scene, const char *name, int n)
 {
   int rc;
@@ -243,6 +285,8 @@ int bench_scene_make (bench_scene *scene, const char *name, int n)
     rc = make_rain (scene, n);
   else if (strcmp (name, "gas") == 0)
     rc = make_gas (scene, n);
+  else if (strcmp (name, "chains") == 0)
+    rc = make_chains (scene, n);
   else
     rc = -1;
   if (rc < 0)
@@ -255,6 +299,7 @@ void bench_scene_free (bench_scene *scene)
   if (!scene)
     return;
   free (scene->bodies);
+  free (scene->joints);
   memset (scene, 0, sizeof *scene);
 }
 
@@ -266,6 +311,8 @@ static int default_bodies (const char *scene)
     return BENCH_RAIN_BODIES;
   if (strcmp (scene, "gas") == 0)
     return BENCH_GAS_BODIES;
+  if (strcmp (scene, "chains") == 0)
+    return BENCH_CHAINS_BODIES;
   return BENCH_PYRAMID_BODIES;
 }
 
@@ -316,7 +363,7 @@ int bench_parse (bench_options *o, int argc, char **argv)
     o->bodies = default_bodies (o->scene);
   return 0;
 usage:
-  fprintf (stderr, "usage: %s [scene=pyramid|rain|gas] [bodies=N] [steps=N] [warmup=N] [substeps=N] "
+  fprintf (stderr, "usage: %s [scene=pyramid|rain|gas|chains] [bodies=N] [steps=N] [warmup=N] [substeps=N] "
                    "[iterations=N] [mode=time|mem] [sleep=0|1]\n", argv[0]);
   return -1;
 }
@@ -331,6 +378,41 @@ double bench_now (void)
 double bench_kinetic (double mass, double inertia, double vx, double vy, double spin)
 {
   return 0.5 * mass * (vx * vx + vy * vy) + 0.5 * inertia * spin * spin;
+}
+
+/* Where the point of body i that was at (x, y) at the start is now (the
+ * point itself for i = -1, the world). */
+static void carried (const bench_scene *s, const double *pose, int i, double x, double y, double *px, double *py)
+{
+  const bench_body *b;
+  double c, sn, lx, ly;
+  if (i < 0)
+    {
+      *px = x, *py = y;
+      return;
+    }
+  b = &s->bodies[i];
+  c = cos (b->angle), sn = sin (b->angle);
+  lx = c * (x - b->x) + sn * (y - b->y);
+  ly = -sn * (x - b->x) + c * (y - b->y);
+  c = cos (pose[3 * i + 2]), sn = sin (pose[3 * i + 2]);
+  *px = pose[3 * i] + c * lx - sn * ly;
+  *py = pose[3 * i + 1] + sn * lx + c * ly;
+}
+
+double bench_joint_gap (const bench_scene *s, const double *pose)
+{
+  double sum = 0.0;
+  int k;
+  for (k = 0; k < s->joint_count; ++k)
+    {
+      const bench_joint *j = &s->joints[k];
+      double ax, ay, bx, by;
+      carried (s, pose, j->a, j->x, j->y, &ax, &ay);
+      carried (s, pose, j->b, j->x, j->y, &bx, &by);
+      sum += hypot (bx - ax, by - ay);
+    }
+  return s->joint_count > 0 ? sum / s->joint_count : 0.0;
 }
 
 int bench_outside (const bench_scene *s, double x, double y)
@@ -350,7 +432,10 @@ void bench_report (const bench_options *o, const bench_scene *s, const bench_res
     printf (" top_drift=%.4f", r->top_drift);
   else
     printf (" top_drift=-");
-  printf (" escaped=%d contacts=%d settings=%s\n", r->escaped, r->contacts, r->settings);
+  printf (" escaped=%d contacts=%d", r->escaped, r->contacts);
+  if (s->joint_count > 0)
+    printf (" joints=%d joint_gap=%.3g", s->joint_count, r->joint_gap);
+  printf (" settings=%s\n", r->settings);
   fflush (stdout);
 }
 

@@ -1,9 +1,10 @@
 /* The benchmark scenes as plain data, one generator for every engine.
  *
  * bench_scene_make fills a list of bodies (shape, size, pose, velocity,
- * static flag) and the world settings (gravity, restitution, friction) of
- * one of the three scenes. carom, Chipmunk and Box2D benches all build their
- * worlds from this data, so all engines start from the same state. The
+ * static flag), a list of joints, and the world settings (gravity,
+ * restitution, friction) of one of the four scenes. carom, Chipmunk and
+ * Box2D benches all build their worlds from this data, so all engines start
+ * from the same state. The
  * generator has its own PRNG with a fixed seed: the same name and body count
  * give the same scene on every machine and in every language binding.
  *
@@ -16,6 +17,11 @@
  *   gas      n mixed polygons on a jittered grid (no overlap) with random
  *            velocities |v| <= 5 in a closed box of static walls.
  *            no gravity, restitution 1, friction 0.
+ *   chains   n / 40 chains of 40 links (0.25 x 0.05 boxes, revolute joints
+ *            at their ends; the first link's to a fixed point), each laid
+ *            straight at 45 degrees below the horizontal and let go, on a
+ *            grid 24 apart so that the chains (10 long) never meet: one
+ *            joint per link. gravity -10, friction 0.6, restitution 0.
  */
 #ifndef CAROM_BENCH_SCENES_H
 #define CAROM_BENCH_SCENES_H
@@ -41,6 +47,18 @@ typedef struct bench_body {
   int is_static;
 } bench_body;
 
+/* A revolute joint: bodies a and b (indices into the scene's bodies; a = -1
+ * is the world, a fixed point) share the point (x, y), given in world
+ * coordinates at the start. With enable_limit, b's angle less a's, less
+ * that difference at the start, stays within [lower, upper]. Joined bodies
+ * do not collide. */
+typedef struct bench_joint {
+  int a, b;
+  double x, y;
+  int enable_limit;
+  double lower, upper;
+} bench_joint;
+
 typedef struct bench_scene {
   char name[16];
   double gravity_x, gravity_y;
@@ -50,12 +68,14 @@ typedef struct bench_scene {
   int count;           /* all bodies */
   int dynamic_count;
   int top;             /* pyramid: index of the top box, else -1 */
+  bench_joint *joints; /* NULL when there are none */
+  int joint_count;
   /* container interior (rain, gas): a body whose centre ends outside it
    * escaped or tunnelled */
   double in_lo_x, in_lo_y, in_hi_x, in_hi_y;
 } bench_scene;
 
-/* Fill `scene` with scene `name` ("pyramid", "rain", "gas") of about `n`
+/* Fill `scene` with scene `name` ("pyramid", "rain", "gas", "chains") of about `n`
  * dynamic bodies. Returns 0 on success, -1 for an unknown name, a bad count
  * or no memory. Free with bench_scene_free. */
 int bench_scene_make (bench_scene *scene, const char *name, int n);
@@ -74,11 +94,13 @@ double bench_body_inertia (const bench_body *b);
 #define BENCH_PYRAMID_BODIES 210
 #define BENCH_RAIN_BODIES 2000
 #define BENCH_GAS_BODIES 500
+#define BENCH_CHAINS_BODIES 1000
+#define BENCH_CHAIN_LINKS 40
 
 /* ---------------------------------------------------------- harness */
 
 /* Command line of every engine's bench, as key=value words:
- *   scene=pyramid|rain|gas  bodies=N  steps=N (timed)  warmup=N (untimed,
+ *   scene=pyramid|rain|gas|chains  bodies=N  steps=N (timed)  warmup=N (untimed,
  *   before the timed steps)  substeps=N iterations=N (0: engine default)
  *   mode=time|mem (mem: carom only, counts allocated bytes)
  *   sleep=0|1 (engines that can put resting bodies to sleep; default 0) */
@@ -111,14 +133,21 @@ typedef struct bench_result {
   double top_drift;         /* pyramid: |top box moved| / box size */
   int escaped;              /* bodies whose centre left the container */
   int contacts;             /* contact points at the end, -1 unknown */
+  double joint_gap;         /* scenes with joints: bench_joint_gap at the end */
 } bench_result;
 
 /* Accumulate the kinetic energy of one body. */
 double bench_kinetic (double mass, double inertia, double vx, double vy, double spin);
+/* The mean distance between the joints' two anchors, the points of their
+ * bodies that were at the joint at the start carried with the bodies to
+ * their poses now (pose[3 i], pose[3 i + 1], pose[3 i + 2]: body i's x, y
+ * and angle); the same for every engine. 0 without joints. */
+double bench_joint_gap (const bench_scene *s, const double *pose);
 /* 1 when (x, y) lies outside the scene's container interior. */
 int bench_outside (const bench_scene *s, double x, double y);
 /* Print one line: engine scene bodies steps ms_per_step energy_drift
- * top_drift escaped contacts settings. */
+ * top_drift escaped contacts settings (and joints=N joint_gap=G before
+ * settings when the scene has joints). */
 void bench_report (const bench_options *o, const bench_scene *s, const bench_result *r);
 
 /* Small deterministic PRNG (splitmix64), for the benches' own use too. */

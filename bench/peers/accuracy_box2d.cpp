@@ -1,10 +1,11 @@
 // Box2D 2.4 through the accuracy measures (bench/accuracy.h), for comparison
 // with carom only. The scenes are built by the Box2D bench's own code:
 // bench_box2d.cpp is included here with its main renamed, so its add_fixture
-// (shapes, friction, restitution and the restitution threshold) is the one
-// used. Its settings: velocity iterations 8, position iterations 3,
-// continuous collision on, sleeping off, dt 1/60; restitution threshold 1 m/s,
-// 0 in scenes without gravity (see bench_box2d.cpp). Box2D computes in float.
+// (shapes, friction, restitution and the restitution threshold) and
+// create_joints (revolute joints) are the ones used. Its settings: velocity
+// iterations 8, position iterations 3, continuous collision on, sleeping
+// off, dt 1/60; restitution threshold 1 m/s, 0 in scenes without gravity
+// (see bench_box2d.cpp). Box2D computes in float.
 #define main bench_box2d_main
 #include "bench_box2d.cpp"
 #undef main
@@ -19,6 +20,7 @@ namespace {
 struct b2_handle {
   b2World *world;
   std::vector<b2Body *> bodies;
+  std::vector<b2RevoluteJoint *> joints;
   float dt;
 };
 
@@ -37,6 +39,7 @@ void *b2_create (const bench_scene *s, const acc_settings *set)
       h->bodies[(size_t) i]->GetUserData ().pointer = (uintptr_t) i;
       add_fixture (h->bodies[(size_t) i], b, s, threshold);
     }
+  h->joints = create_joints (h->world, h->bodies, *s);
   return h;
 }
 
@@ -75,6 +78,14 @@ void b2_contacts (void *p, acc_contact_fn fn, void *user)
     }
 }
 
+// GetReactionForce: the force on body B, in the world frame.
+void b2_joint_force (void *p, int joint, double *fx, double *fy)
+{
+  b2_handle *h = static_cast<b2_handle *> (p);
+  b2Vec2 f = h->joints[(size_t) joint]->GetReactionForce (1.0f / h->dt);
+  *fx = f.x, *fy = f.y;
+}
+
 void b2_destroy (void *p)
 {
   b2_handle *h = static_cast<b2_handle *> (p);
@@ -95,7 +106,7 @@ int main (int argc, char **)
     }
   static const acc_engine engine = {
     "box2d", "velocityIterations=8,positionIterations=3,sleep=off,dt=1/60", b2_create, b2_step, b2_state,
-    b2_contacts, b2_destroy,
+    b2_contacts, b2_destroy, b2_joint_force,
   };
   acc_settings set;
   std::memset (&set, 0, sizeof set);

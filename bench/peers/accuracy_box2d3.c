@@ -1,7 +1,8 @@
 /* Box2D v3 through the accuracy measures (bench/accuracy.h), for comparison
  * with carom only. The scenes are built by the Box2D v3 bench's own code:
  * bench_box2d3.c is included here with its main renamed, so its add_shape
- * and create_body (shapes, friction, restitution) are the ones used. Its
+ * and create_body (shapes, friction, restitution) and create_joints
+ * (revolute joints at Box2D's defaults) are the ones used. Its
  * settings: Box2D v3's defaults (4 sub-steps, contact hertz 30, continuous
  * collision on), one worker, sleeping off, dt 1/60; restitution threshold
  * 0 in scenes without gravity, its default 1 m/s otherwise (as
@@ -16,6 +17,7 @@ int bench_box2d3_main (int argc, char **argv);
 typedef struct b3_handle {
   b2WorldId world;
   b2BodyId *bodies;
+  b2JointId *joints;
   int count;
   float dt;
 } b3_handle;
@@ -28,8 +30,11 @@ static void *b3_create (const bench_scene *s, const acc_settings *set)
   if (!h)
     return NULL;
   h->bodies = calloc ((size_t) s->count + 1, sizeof *h->bodies);
-  if (!h->bodies)
+  h->joints = calloc ((size_t) s->joint_count + 1, sizeof *h->joints);
+  if (!h->bodies || !h->joints)
     {
+      free (h->bodies);
+      free (h->joints);
       free (h);
       return NULL;
     }
@@ -48,6 +53,7 @@ static void *b3_create (const bench_scene *s, const acc_settings *set)
       b2Body_SetUserData (h->bodies[i], (void *) (intptr_t) i);
       add_shape (h->bodies[i], &s->bodies[i], s);
     }
+  create_joints (h->world, h->bodies, s, h->joints);
   return h;
 }
 
@@ -100,6 +106,14 @@ static void b3_contacts (void *p, acc_contact_fn fn, void *user)
   free (data);
 }
 
+/* b2Joint_GetConstraintForce: the force on body B, in the world frame. */
+static void b3_joint_force (void *p, int joint, double *fx, double *fy)
+{
+  b3_handle *h = p;
+  b2Vec2 f = b2Joint_GetConstraintForce (h->joints[joint]);
+  *fx = f.x, *fy = f.y;
+}
+
 static void b3_destroy (void *p)
 {
   b3_handle *h = p;
@@ -107,6 +121,7 @@ static void b3_destroy (void *p)
     return;
   b2DestroyWorld (h->world);
   free (h->bodies);
+  free (h->joints);
   free (h);
 }
 
@@ -114,7 +129,7 @@ int main (int argc, char **argv)
 {
   static const acc_engine engine = {
     "box2d3", "version=3,substeps=4,workers=1,continuous=on,sleep=off,dt=1/60", b3_create, b3_step, b3_state,
-    b3_contacts, b3_destroy,
+    b3_contacts, b3_destroy, b3_joint_force,
   };
   acc_settings set;
   (void) argv;

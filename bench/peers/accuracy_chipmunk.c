@@ -1,11 +1,12 @@
 /* Chipmunk 7 through the accuracy measures (bench/accuracy.h), for
  * comparison with carom only. The scenes are built by the Chipmunk bench's
  * own code: bench_chipmunk.c is included here with its main renamed, so its
- * add_shape (shapes, friction and elasticity mixing) is the one used. Its
- * settings: iterations 10, collision slop 0.01, no sleeping, dt 1/60 (see
- * bench_chipmunk.c). Chipmunk multiplies the two shapes' elasticity, so each
- * shape gets sqrt(e) (the bench passes e, which is the same for its only
- * elastic scene, e = 1). */
+ * add_shape (shapes, friction and elasticity mixing) and add_joints (pivot
+ * joints, rotary limit joints) are the ones used. Its settings: iterations
+ * 10, collision slop 0.01, no sleeping, dt 1/60 (see bench_chipmunk.c).
+ * Chipmunk multiplies the two shapes' elasticity, so each shape gets
+ * sqrt(e) (the bench passes e, which is the same for its only elastic
+ * scene, e = 1). */
 #include <stdint.h>
 
 #define main bench_chipmunk_main
@@ -19,6 +20,8 @@ typedef struct cp_handle {
   cpSpace *space;
   cpBody **bodies;
   cpShape **shapes;
+  cpConstraint **joints; /* add_joints: pivot, limit (or NULL) per joint */
+  int joint_count;
   int count;
   double dt;
 } cp_handle;
@@ -31,6 +34,7 @@ static void cp_destroy (void *p)
     return;
   if (h->space)
     cpSpaceFree (h->space);
+  free_joints (h->joints, h->joint_count);
   for (i = 0; i < h->count; ++i)
     {
       if (h->shapes && h->shapes[i])
@@ -81,6 +85,13 @@ static void *cp_create (const bench_scene *s, const acc_settings *set)
       h->bodies[i] = body;
       h->count = i + 1;
       h->shapes[i] = add_shape (h->space, body, b, s->friction, sqrt (s->restitution));
+    }
+  h->joints = add_joints (h->space, h->bodies, s);
+  h->joint_count = s->joint_count;
+  if (!h->joints)
+    {
+      cp_destroy (h);
+      return NULL;
     }
   return h;
 }
@@ -140,8 +151,18 @@ static void cp_contacts (void *p, acc_contact_fn fn, void *user)
   cpSpaceEachBody (h->space, cp_body, &v);
 }
 
+/* Chipmunk gives a constraint's impulse of the last step as a magnitude
+ * only (cpConstraintGetImpulse): it goes to fy, over the step. */
+static void cp_joint_force (void *p, int joint, double *fx, double *fy)
+{
+  cp_handle *h = p;
+  *fx = 0.0;
+  *fy = cpConstraintGetImpulse (h->joints[2 * joint]) / h->dt;
+}
+
 static const acc_engine chipmunk_engine = {
   "chipmunk", "iterations=10,slop=0.01,dt=1/60", cp_create, cp_step, cp_state, cp_contacts, cp_destroy,
+  cp_joint_force,
 };
 
 int main (int argc, char **argv)

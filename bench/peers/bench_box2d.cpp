@@ -1,6 +1,7 @@
 // Box2D 2.4 on the benchmark scenes, for comparison with carom only.
 // Same scene data (scenes.c), same dt = 1/60 and step counts as
-// bench_carom.c; prints the same key=value line.
+// bench_carom.c; prints the same key=value line. Joints (the chains scene)
+// are revolute joints (create_joints below).
 //
 // Settings: velocityIterations 8, positionIterations 3 (Box2D's usual),
 // continuous collision on (its default), sleeping off unless sleep=1
@@ -63,6 +64,33 @@ static b2Body *create_body (b2World *world, const bench_body *b)
   return world->CreateBody (&bd);
 }
 
+// The scene's joints as Box2D revolute joints (Initialize sets the anchors
+// and the reference angle; joined bodies do not collide). A joint to the
+// world holds to one static body without fixtures, made here when needed.
+static std::vector<b2RevoluteJoint *> create_joints (b2World *world, const std::vector<b2Body *> &bodies,
+                                                     const bench_scene &s)
+{
+  std::vector<b2RevoluteJoint *> out;
+  b2Body *ground = nullptr;
+  for (int i = 0; i < s.joint_count; ++i)
+    {
+      const bench_joint *j = &s.joints[i];
+      if (j->a < 0 && !ground)
+        {
+          b2BodyDef bd;
+          ground = world->CreateBody (&bd);
+        }
+      b2RevoluteJointDef jd;
+      jd.Initialize (j->a < 0 ? ground : bodies[(size_t) j->a], bodies[(size_t) j->b],
+                     b2Vec2 ((float) j->x, (float) j->y));
+      jd.enableLimit = j->enable_limit != 0;
+      jd.lowerAngle = (float) j->lower;
+      jd.upperAngle = (float) j->upper;
+      out.push_back (static_cast<b2RevoluteJoint *> (world->CreateJoint (&jd)));
+    }
+  return out;
+}
+
 static double kinetic (const std::vector<b2Body *> &bodies, const bench_scene &s)
 {
   double e = 0.0;
@@ -94,6 +122,7 @@ int main (int argc, char **argv)
       bodies[i] = create_body (world, b);
       add_fixture (bodies[i], b, &s, threshold);
     }
+  create_joints (world, bodies, s);
 
   bench_result r;
   std::memset (&r, 0, sizeof r);
@@ -129,6 +158,17 @@ int main (int argc, char **argv)
   for (b2Contact *c = world->GetContactList (); c; c = c->GetNext ())
     if (c->IsTouching ())
       r.contacts += c->GetManifold ()->pointCount;
+  if (s.joint_count > 0)
+    {
+      std::vector<double> pose ((size_t) s.count * 3);
+      for (int i = 0; i < s.count; ++i)
+        {
+          b2Vec2 p = bodies[(size_t) i]->GetPosition ();
+          pose[3 * (size_t) i] = p.x, pose[3 * (size_t) i + 1] = p.y;
+          pose[3 * (size_t) i + 2] = bodies[(size_t) i]->GetAngle ();
+        }
+      r.joint_gap = bench_joint_gap (&s, pose.data ());
+    }
   bench_report (&o, &s, &r);
   delete world;
   bench_scene_free (&s);

@@ -2,6 +2,9 @@
  * Same scene data (scenes.c), same dt = 1/60 and step counts as
  * bench_carom.c; prints the same key=value line (engine=box2d3).
  *
+ * Joints (the chains scene) are revolute joints at Box2D's defaults
+ * (create_joints below).
+ *
  * Settings: Box2D v3's defaults (b2DefaultWorldDef): 4 sub-steps per step
  * (its soft step solver; substeps=N overrides), contact hertz 30, damping
  * ratio 10, contact speed 3 m/s, continuous collision on. One worker and
@@ -72,6 +75,51 @@ static b2BodyId create_body (b2WorldId world, const bench_body *b)
       bd.angularVelocity = (float) b->spin;
     }
   return b2CreateBody (world, &bd);
+}
+
+/* The scene's joints as Box2D revolute joints at its defaults (constraint
+ * hertz 60, damping ratio 2; joined bodies do not collide). A joint to the
+ * world holds to one static body without shapes at the origin, made here
+ * when a joint needs it. The joint angle (b's less a's) starts at 0, as in
+ * the scene: frame A is a's at the anchor, frame B is turned to match it.
+ * Their ids go to out[0 .. joint_count) (out may be NULL). */
+static void create_joints (b2WorldId world, const b2BodyId *bodies, const bench_scene *s, b2JointId *out)
+{
+  b2BodyId ground = b2_nullBodyId;
+  int i;
+  for (i = 0; i < s->joint_count; ++i)
+    {
+      const bench_joint *j = &s->joints[i];
+      b2RevoluteJointDef jd = b2DefaultRevoluteJointDef ();
+      b2BodyId a, b = bodies[j->b];
+      b2Pos p;
+      b2JointId id;
+      if (j->a < 0)
+        {
+          if (B2_IS_NULL (ground))
+            {
+              b2BodyDef bd = b2DefaultBodyDef ();
+              ground = b2CreateBody (world, &bd);
+            }
+          a = ground;
+        }
+      else
+        a = bodies[j->a];
+      p.x = (float) j->x;
+      p.y = (float) j->y;
+      jd.base.bodyIdA = a;
+      jd.base.bodyIdB = b;
+      jd.base.localFrameA.p = b2Body_GetLocalPoint (a, p);
+      jd.base.localFrameA.q = b2Rot_identity;
+      jd.base.localFrameB.p = b2Body_GetLocalPoint (b, p);
+      jd.base.localFrameB.q = b2InvMulRot (b2Body_GetRotation (b), b2Body_GetRotation (a));
+      jd.enableLimit = j->enable_limit != 0;
+      jd.lowerAngle = (float) j->lower;
+      jd.upperAngle = (float) j->upper;
+      id = b2CreateRevoluteJoint (world, &jd);
+      if (out)
+        out[i] = id;
+    }
 }
 
 static double kinetic (const b2BodyId *bodies, const bench_scene *s)
@@ -153,6 +201,7 @@ int main (int argc, char **argv)
       bodies[i] = create_body (world, &s.bodies[i]);
       add_shape (bodies[i], &s.bodies[i], &s);
     }
+  create_joints (world, bodies, &s, NULL);
 
   memset (&r, 0, sizeof r);
   snprintf (settings, sizeof settings, "version=%d.%d.%d,substeps=%d,workers=1,continuous=on,sleep=%s", ver.major,
@@ -180,6 +229,20 @@ int main (int argc, char **argv)
         r.top_drift = hypot (p.x - top0.x, p.y - top0.y) / s.bodies[i].h;
     }
   r.contacts = contact_points (bodies, &s);
+  if (s.joint_count > 0)
+    {
+      double *pose = malloc ((size_t) s.count * 3 * sizeof *pose);
+      if (!pose)
+        return 1;
+      for (i = 0; i < s.count; ++i)
+        {
+          b2Vec2 p = b2Body_GetPosition (bodies[i]);
+          pose[3 * i] = p.x, pose[3 * i + 1] = p.y;
+          pose[3 * i + 2] = b2Rot_GetAngle (b2Body_GetRotation (bodies[i]));
+        }
+      r.joint_gap = bench_joint_gap (&s, pose);
+      free (pose);
+    }
   bench_report (&o, &s, &r);
   b2DestroyWorld (world);
   free (bodies);

@@ -1,6 +1,7 @@
 /* Chipmunk2D 7 on the benchmark scenes, for comparison with carom only.
  * Same scene data (scenes.c), same dt = 1/60 and step counts as
- * bench_carom.c; prints the same key=value line.
+ * bench_carom.c; prints the same key=value line. Joints (the chains scene)
+ * are pivot joints (add_joints below), at Chipmunk's default error bias.
  *
  * Settings: iterations 10 (Chipmunk's usual), no sleeping (its default),
  * default bounding-box-tree spatial index. collisionSlop is set to 0.01
@@ -56,6 +57,45 @@ static cpShape *add_shape (cpSpace *space, cpBody *body, const bench_body *b, do
   return cpSpaceAddShape (space, shape);
 }
 
+/* The scene's joints as Chipmunk pivot joints (and a rotary limit joint
+ * where the scene has a limit, its range moved by b's angle less a's at the
+ * start), on the space's static body for a joint to the world; joined
+ * bodies do not collide. Each joint's constraints go to out[2 i] (the
+ * pivot) and out[2 i + 1] (the limit, or NULL); free them with
+ * free_joints after the space. */
+static cpConstraint **add_joints (cpSpace *space, cpBody *const *bodies, const bench_scene *s)
+{
+  cpConstraint **out = calloc ((size_t) (2 * s->joint_count + 1), sizeof *out);
+  int i;
+  if (!out)
+    return NULL;
+  for (i = 0; i < s->joint_count; ++i)
+    {
+      const bench_joint *j = &s->joints[i];
+      cpBody *a = j->a < 0 ? cpSpaceGetStaticBody (space) : bodies[j->a], *b = bodies[j->b];
+      out[2 * i] = cpSpaceAddConstraint (space, cpPivotJointNew (a, b, cpv (j->x, j->y)));
+      cpConstraintSetCollideBodies (out[2 * i], cpFalse);
+      if (j->enable_limit)
+        {
+          double ref = cpBodyGetAngle (b) - cpBodyGetAngle (a);
+          out[2 * i + 1] = cpSpaceAddConstraint (space, cpRotaryLimitJointNew (a, b, j->lower + ref, j->upper + ref));
+          cpConstraintSetCollideBodies (out[2 * i + 1], cpFalse);
+        }
+    }
+  return out;
+}
+
+static void free_joints (cpConstraint **joints, int joint_count)
+{
+  int i;
+  if (!joints)
+    return;
+  for (i = 0; i < 2 * joint_count; ++i)
+    if (joints[i])
+      cpConstraintFree (joints[i]);
+  free (joints);
+}
+
 int main (int argc, char **argv)
 {
   bench_options o;
@@ -64,6 +104,7 @@ int main (int argc, char **argv)
   cpSpace *space;
   cpBody **bodies;
   cpShape **shapes;
+  cpConstraint **joints;
   count_state cs = { 0 };
   char settings[64];
   double t0, x0 = 0.0, y0 = 0.0;
@@ -101,6 +142,9 @@ int main (int argc, char **argv)
       shapes[i] = add_shape (space, body, b, s.friction, s.restitution);
       bodies[i] = body;
     }
+  joints = add_joints (space, bodies, &s);
+  if (!joints)
+    return 1;
   memset (&r, 0, sizeof r);
   snprintf (settings, sizeof settings, "iterations=%d,substeps=%d,slop=0.01", iterations,
             o.substeps > 0 ? o.substeps : 1);
@@ -147,8 +191,23 @@ int main (int argc, char **argv)
     }
   cpSpaceEachBody (space, count_body, &cs);
   r.contacts = cs.points;
+  if (s.joint_count > 0)
+    {
+      double *pose = malloc ((size_t) s.count * 3 * sizeof *pose);
+      if (!pose)
+        return 1;
+      for (i = 0; i < s.count; ++i)
+        {
+          cpVect p = cpBodyGetPosition (bodies[i]);
+          pose[3 * i] = p.x, pose[3 * i + 1] = p.y;
+          pose[3 * i + 2] = cpBodyGetAngle (bodies[i]);
+        }
+      r.joint_gap = bench_joint_gap (&s, pose);
+      free (pose);
+    }
   bench_report (&o, &s, &r);
   cpSpaceFree (space);
+  free_joints (joints, s.joint_count);
   for (i = 0; i < s.count; ++i)
     {
       cpShapeFree (shapes[i]);
