@@ -206,56 +206,241 @@ void joint_tree_build (carom_world *world)
 
 /* -------------------------------------------------------- 3 x 3 blocks */
 
-/* c = a b (3 x 3, row-major) */
-static void mul (const double *a, const double *b, double *c)
+/* The blocks are 3 x 3, row-major, of which a node's first `rows` rows
+ * are used (a body has 3: x, y, angle; a joint its row count), and against
+ * its parent the parent's first rows columns. Each kernel comes in one
+ * version per pair of sizes, so that every loop has constant bounds. */
+
+/* c = a b, a n x n, b n x m */
+#define DEFINE_MUL(n, m)                                                      \
+  static void mul_##n##m (const double *a, const double *b, double *c)        \
+  {                                                                           \
+    int r, k, q;                                                              \
+    for (r = 0; r < n; ++r)                                                   \
+      for (k = 0; k < m; ++k)                                                 \
+        {                                                                     \
+          double sum = 0.0;                                                   \
+          for (q = 0; q < n; ++q)                                             \
+            sum += a[3 * r + q] * b[3 * q + k];                               \
+          c[3 * r + k] = sum;                                                 \
+        }                                                                     \
+  }
+/* d -= a^T b, a and b n x m, d m x m */
+#define DEFINE_SUB_TMUL(n, m)                                                 \
+  static void sub_tmul_##n##m (double *d, const double *a, const double *b)   \
+  {                                                                           \
+    int r, k, q;                                                              \
+    for (r = 0; r < m; ++r)                                                   \
+      for (k = 0; k < m; ++k)                                                 \
+        {                                                                     \
+          double sum = 0.0;                                                   \
+          for (q = 0; q < n; ++q)                                             \
+            sum += a[3 * q + r] * b[3 * q + k];                               \
+          d[3 * r + k] -= sum;                                                \
+        }                                                                     \
+  }
+/* xp -= l^T x (l n x m), then, down: x = d x - l xp */
+#define DEFINE_UP(n, m)                                                       \
+  static void up_##n##m (const double *l, const double *x, double *xp)        \
+  {                                                                           \
+    int r, q;                                                                 \
+    for (r = 0; r < m; ++r)                                                   \
+      {                                                                       \
+        double sum = 0.0;                                                     \
+        for (q = 0; q < n; ++q)                                               \
+          sum += l[3 * q + r] * x[q];                                         \
+        xp[r] -= sum;                                                         \
+      }                                                                       \
+  }
+#define DEFINE_DOWN(n, m)                                                     \
+  static void down_##n##m (const double *d, const double *l, double *x,       \
+                           const double *xp)                                  \
+  {                                                                           \
+    double y[3];                                                              \
+    int r, q;                                                                 \
+    for (r = 0; r < n; ++r)                                                   \
+      {                                                                       \
+        double sum = 0.0;                                                     \
+        for (q = 0; q < n; ++q)                                               \
+          sum += d[3 * r + q] * x[q];                                         \
+        for (q = 0; q < m; ++q)                                               \
+          sum -= l[3 * r + q] * xp[q];                                        \
+        y[r] = sum;                                                           \
+      }                                                                       \
+    for (r = 0; r < n; ++r)                                                   \
+      x[r] = y[r];                                                            \
+  }
+#define DEFINE_KERNELS(n, m) DEFINE_MUL (n, m) DEFINE_SUB_TMUL (n, m) DEFINE_UP (n, m) DEFINE_DOWN (n, m)
+DEFINE_KERNELS (1, 3)
+DEFINE_KERNELS (3, 3)
+DEFINE_KERNELS (3, 1)
+/* (the roots need only the way down) */
+DEFINE_DOWN (3, 0)
+DEFINE_DOWN (1, 0)
+DEFINE_DOWN (2, 0)
+
+/* The pairs of a chain of revolute joints, a body (3) under a joint (2)
+ * and a joint under a body, written out: most nodes are one of them. */
+static void mul_32 (const double *a, const double *b, double *c)
 {
-  int r, k;
-  for (r = 0; r < 3; ++r)
-    for (k = 0; k < 3; ++k)
-      c[3 * r + k] = a[3 * r] * b[k] + a[3 * r + 1] * b[3 + k] + a[3 * r + 2] * b[6 + k];
+  double b0 = b[0], b1 = b[1], b3 = b[3], b4 = b[4], b6 = b[6], b7 = b[7];
+  c[0] = a[0] * b0 + a[1] * b3 + a[2] * b6, c[1] = a[0] * b1 + a[1] * b4 + a[2] * b7;
+  c[3] = a[3] * b0 + a[4] * b3 + a[5] * b6, c[4] = a[3] * b1 + a[4] * b4 + a[5] * b7;
+  c[6] = a[6] * b0 + a[7] * b3 + a[8] * b6, c[7] = a[6] * b1 + a[7] * b4 + a[8] * b7;
 }
 
-/* d -= a^T b */
-static void sub_tmul (double *d, const double *a, const double *b)
+static void sub_tmul_32 (double *d, const double *a, const double *b)
 {
-  int r, k;
-  for (r = 0; r < 3; ++r)
-    for (k = 0; k < 3; ++k)
-      d[3 * r + k] -= a[r] * b[k] + a[3 + r] * b[3 + k] + a[6 + r] * b[6 + k];
+  d[0] -= a[0] * b[0] + a[3] * b[3] + a[6] * b[6];
+  d[1] -= a[0] * b[1] + a[3] * b[4] + a[6] * b[7];
+  d[3] -= a[1] * b[0] + a[4] * b[3] + a[7] * b[6];
+  d[4] -= a[1] * b[1] + a[4] * b[4] + a[7] * b[7];
 }
 
-/* the inverse of a 3 x 3 block (0 where it is singular), computed on the
- * block scaled by a power of two near its largest entry (exact) when that
- * entry is far from 1: a joint's rows hold lever arms, and the determinant
- * of the unscaled block is their sixth power, which leaves the doubles
- * long before the block itself does */
-static void invert (double *m)
+static void up_32 (const double *l, const double *x, double *xp)
 {
-  double big = 0.0, s, a, b, c, d, e, f, g, h, i, A, B, C, det;
-  int k, exponent;
-  for (k = 0; k < 9; ++k)
-    big = fabs (m[k]) > big ? fabs (m[k]) : big;
-  if (!(big > 0.0) || !isfinite (big))
+  xp[0] -= l[0] * x[0] + l[3] * x[1] + l[6] * x[2];
+  xp[1] -= l[1] * x[0] + l[4] * x[1] + l[7] * x[2];
+}
+
+static void down_32 (const double *d, const double *l, double *x, const double *xp)
+{
+  double x0 = x[0], x1 = x[1], x2 = x[2];
+  x[0] = d[0] * x0 + d[1] * x1 + d[2] * x2 - (l[0] * xp[0] + l[1] * xp[1]);
+  x[1] = d[3] * x0 + d[4] * x1 + d[5] * x2 - (l[3] * xp[0] + l[4] * xp[1]);
+  x[2] = d[6] * x0 + d[7] * x1 + d[8] * x2 - (l[6] * xp[0] + l[7] * xp[1]);
+}
+
+static void mul_23 (const double *a, const double *b, double *c)
+{
+  c[0] = a[0] * b[0] + a[1] * b[3], c[1] = a[0] * b[1] + a[1] * b[4], c[2] = a[0] * b[2] + a[1] * b[5];
+  c[3] = a[3] * b[0] + a[4] * b[3], c[4] = a[3] * b[1] + a[4] * b[4], c[5] = a[3] * b[2] + a[4] * b[5];
+}
+
+static void sub_tmul_23 (double *d, const double *a, const double *b)
+{
+  double a0 = a[0], a1 = a[1], a2 = a[2], a3 = a[3], a4 = a[4], a5 = a[5];
+  double b0 = b[0], b1 = b[1], b2 = b[2], b3 = b[3], b4 = b[4], b5 = b[5];
+  d[0] -= a0 * b0 + a3 * b3, d[1] -= a0 * b1 + a3 * b4, d[2] -= a0 * b2 + a3 * b5;
+  d[3] -= a1 * b0 + a4 * b3, d[4] -= a1 * b1 + a4 * b4, d[5] -= a1 * b2 + a4 * b5;
+  d[6] -= a2 * b0 + a5 * b3, d[7] -= a2 * b1 + a5 * b4, d[8] -= a2 * b2 + a5 * b5;
+}
+
+static void up_23 (const double *l, const double *x, double *xp)
+{
+  xp[0] -= l[0] * x[0] + l[3] * x[1];
+  xp[1] -= l[1] * x[0] + l[4] * x[1];
+  xp[2] -= l[2] * x[0] + l[5] * x[1];
+}
+
+static void down_23 (const double *d, const double *l, double *x, const double *xp)
+{
+  double x0 = x[0], x1 = x[1];
+  x[0] = d[0] * x0 + d[1] * x1 - (l[0] * xp[0] + l[1] * xp[1] + l[2] * xp[2]);
+  x[1] = d[3] * x0 + d[4] * x1 - (l[3] * xp[0] + l[4] * xp[1] + l[5] * xp[2]);
+}
+
+/* The eliminating of a node into its parent (m 0: a root) */
+static void eliminate (tree_node *n, tree_node *p)
+{
+  switch (4 * n->rows + (p ? p->rows : 0))
     {
-      for (k = 0; k < 9; ++k)
-        m[k] = 0.0;
+    case 4 * 1 + 3: mul_13 (n->d, n->h, n->l), sub_tmul_13 (p->d, n->h, n->l); break;
+    case 4 * 2 + 3: mul_23 (n->d, n->h, n->l), sub_tmul_23 (p->d, n->h, n->l); break;
+    case 4 * 3 + 3: mul_33 (n->d, n->h, n->l), sub_tmul_33 (p->d, n->h, n->l); break;
+    case 4 * 3 + 1: mul_31 (n->d, n->h, n->l), sub_tmul_31 (p->d, n->h, n->l); break;
+    case 4 * 3 + 2: mul_32 (n->d, n->h, n->l), sub_tmul_32 (p->d, n->h, n->l); break;
+    default: break; /* a root */
+    }
+}
+
+/* x of the parent -= l^T x (on the way up) */
+static void substitute_up (const tree_node *n, tree_node *p)
+{
+  switch (4 * n->rows + p->rows)
+    {
+    case 4 * 1 + 3: up_13 (n->l, n->x, p->x); break;
+    case 4 * 2 + 3: up_23 (n->l, n->x, p->x); break;
+    case 4 * 3 + 3: up_33 (n->l, n->x, p->x); break;
+    case 4 * 3 + 1: up_31 (n->l, n->x, p->x); break;
+    case 4 * 3 + 2: up_32 (n->l, n->x, p->x); break;
+    default: break;
+    }
+}
+
+/* x = d x - l x of the parent (on the way down; none at a root) */
+static void substitute_down (tree_node *n, const tree_node *p)
+{
+  static const double none[3] = {0.0, 0.0, 0.0};
+  switch (4 * n->rows + (p ? p->rows : 0))
+    {
+    case 4 * 1 + 3: down_13 (n->d, n->l, n->x, p->x); break;
+    case 4 * 2 + 3: down_23 (n->d, n->l, n->x, p->x); break;
+    case 4 * 3 + 3: down_33 (n->d, n->l, n->x, p->x); break;
+    case 4 * 3 + 1: down_31 (n->d, n->l, n->x, p->x); break;
+    case 4 * 3 + 2: down_32 (n->d, n->l, n->x, p->x); break;
+    case 4 * 3: down_30 (n->d, n->l, n->x, none); break;
+    case 4 * 2: down_20 (n->d, n->l, n->x, none); break;
+    case 4 * 1: down_10 (n->d, n->l, n->x, none); break;
+    default: break;
+    }
+}
+
+/* A power of two near the largest of the n x n block's entries when that
+ * is far from 1, else 1 (exact to divide by): a joint's rows hold lever
+ * arms, and the determinant of the unscaled block is up to their sixth
+ * power, which leaves the doubles long before the block itself does. 0
+ * for a block of zeros or of a number that is not finite. The pivot
+ * blocks are definite (a body's positive: its mass plus what its children
+ * hold; a joint's negative: minus its rows' effective inverse mass), so
+ * their largest entry is on the diagonal. */
+static double scale_of (const double *m, int n)
+{
+  double big = 0.0;
+  int r, exponent;
+  for (r = 0; r < n; ++r)
+    big = fabs (m[4 * r]) > big ? fabs (m[4 * r]) : big;
+  if (!(big > 0.0) || !isfinite (big))
+    return 0.0;
+  if (big <= 1e100 && big >= 1e-100)
+    return 1.0;
+  frexp (big, &exponent);
+  return ldexp (1.0, exponent);
+}
+
+/* The inverse of the n x n block (n = 1, 2, 3; 0 where it is singular),
+ * through the block divided by scale_of. */
+static void invert (double *m, int n)
+{
+  double scale = scale_of (m, n), s, det;
+  if (scale == 0.0)
+    {
+      memset (m, 0, 9 * sizeof *m);
       return;
     }
-  s = 1.0;
-  if (big > 1e100 || big < 1e-100)
+  s = 1.0 / scale;
+  if (n == 1)
+    m[0] = 1.0 / m[0];
+  else if (n == 2)
     {
-      frexp (big, &exponent);
-      s = ldexp (1.0, -exponent);
+      double a = m[0] * s, b = m[1] * s, c = m[3] * s, d = m[4] * s;
+      det = a * d - b * c;
+      if (det != 0.0)
+        det = s / det;
+      m[0] = d * det, m[1] = -b * det, m[3] = -c * det, m[4] = a * det;
     }
-  a = m[0] * s, b = m[1] * s, c = m[2] * s, d = m[3] * s, e = m[4] * s, f = m[5] * s;
-  g = m[6] * s, h = m[7] * s, i = m[8] * s;
-  A = e * i - f * h, B = -(d * i - f * g), C = d * h - e * g;
-  det = a * A + b * B + c * C;
-  if (det != 0.0)
-    det = s / det;
-  m[0] = A * det, m[1] = -(b * i - c * h) * det, m[2] = (b * f - c * e) * det;
-  m[3] = B * det, m[4] = (a * i - c * g) * det, m[5] = -(a * f - c * d) * det;
-  m[6] = C * det, m[7] = -(a * h - b * g) * det, m[8] = (a * e - b * d) * det;
+  else
+    {
+      double a = m[0] * s, b = m[1] * s, c = m[2] * s, d = m[3] * s, e = m[4] * s, f = m[5] * s;
+      double g = m[6] * s, h = m[7] * s, i = m[8] * s;
+      double A = e * i - f * h, B = -(d * i - f * g), C = d * h - e * g;
+      det = a * A + b * B + c * C;
+      if (det != 0.0)
+        det = s / det;
+      m[0] = A * det, m[1] = -(b * i - c * h) * det, m[2] = (b * f - c * e) * det;
+      m[3] = B * det, m[4] = (a * i - c * g) * det, m[5] = -(a * f - c * d) * det;
+      m[6] = C * det, m[7] = -(a * h - b * g) * det, m[8] = (a * e - b * d) * det;
+    }
 }
 
 /* ------------------------------------------------------------- a pass */
@@ -275,12 +460,8 @@ static void factor (joint_tree *t)
   for (i = t->node_count - 1; i >= 0; --i)
     {
       tree_node *n = &t->nodes[i];
-      invert (n->d);
-      if (n->parent >= 0)
-        {
-          mul (n->d, n->h, n->l);
-          sub_tmul (t->nodes[n->parent].d, n->h, n->l);
-        }
+      invert (n->d, n->rows);
+      eliminate (n, n->parent >= 0 ? &t->nodes[n->parent] : NULL);
     }
 }
 
@@ -288,31 +469,12 @@ static void factor (joint_tree *t)
  * leaves up, then back down from the roots. */
 static void substitute (joint_tree *t)
 {
-  int32_t i, r;
+  int32_t i;
   for (i = t->node_count - 1; i >= 0; --i)
-    {
-      const tree_node *n = &t->nodes[i];
-      if (n->parent >= 0)
-        {
-          double *xp = t->nodes[n->parent].x;
-          for (r = 0; r < 3; ++r)
-            xp[r] -= n->l[r] * n->x[0] + n->l[3 + r] * n->x[1] + n->l[6 + r] * n->x[2];
-        }
-    }
+    if (t->nodes[i].parent >= 0)
+      substitute_up (&t->nodes[i], &t->nodes[t->nodes[i].parent]);
   for (i = 0; i < t->node_count; ++i)
-    {
-      tree_node *n = &t->nodes[i];
-      double y[3];
-      for (r = 0; r < 3; ++r)
-        y[r] = n->d[3 * r] * n->x[0] + n->d[3 * r + 1] * n->x[1] + n->d[3 * r + 2] * n->x[2];
-      if (n->parent >= 0)
-        {
-          const double *xp = t->nodes[n->parent].x;
-          for (r = 0; r < 3; ++r)
-            y[r] -= n->l[3 * r] * xp[0] + n->l[3 * r + 1] * xp[1] + n->l[3 * r + 2] * xp[2];
-        }
-      n->x[0] = y[0], n->x[1] = y[1], n->x[2] = y[2];
-    }
+    substitute_down (&t->nodes[i], t->nodes[i].parent >= 0 ? &t->nodes[t->nodes[i].parent] : NULL);
 }
 
 /* The projection corrects at most a body's size of a point's error and
@@ -355,12 +517,9 @@ static void refactor (carom_world *world)
         {
           joint *j = &js->list[n->joint];
           double c[3];
-          memset (j->ja, 0, sizeof j->ja);
-          memset (j->jb, 0, sizeof j->jb);
+          /* (rows past its count are never written: 0 since its creation) */
           joint_rows (j, &sb[j->a < 0 ? world->slot_count : j->a], &sb[j->b], j->ja, j->jb, c);
           n->rows = joint_row_count (j);
-          for (r = n->rows; r < 3; ++r)
-            n->d[4 * r] = 1.0; /* an unused row: x = 0 */
           if (n->parent >= 0)
             memcpy (n->h, joint_block (j, t->nodes[n->parent].body), sizeof n->h);
         }
@@ -425,12 +584,14 @@ static void load (carom_world *world, int position)
 /* J^T x of a joint node for its body a (pa) and b (pb) */
 static void joint_push (const joint *j, const tree_node *n, double *pa, double *pb)
 {
-  int32_t r, k;
+  /* rows past the count are 0 in the joint and in x */
+  const double *a = j->ja, *b = j->jb, *x = n->x;
+  int k;
   for (k = 0; k < 3; ++k)
-    pa[k] = pb[k] = 0.0;
-  for (r = 0; r < n->rows; ++r)
-    for (k = 0; k < 3; ++k)
-      pa[k] += j->ja[3 * r + k] * n->x[r], pb[k] += j->jb[3 * r + k] * n->x[r];
+    {
+      pa[k] = a[k] * x[0] + a[3 + k] * x[1] + a[6 + k] * x[2];
+      pb[k] = b[k] * x[0] + b[3 + k] * x[1] + b[6 + k] * x[2];
+    }
 }
 
 void joint_tree_solve (carom_world *world)
