@@ -25,7 +25,7 @@
  *      version 0.2 (forces, impulses, filters, user data, ray casts,
  *      queries, events, the debug draw, compound bodies and their shapes,
  *      joints of every type with fuzzed anchors, axes, limits, motors and
- *      springs, and the joint calls: op_api).
+ *      springs, and the joint calls, listings and setters: op_api).
  * After every operation every body's state and every contact must be finite.
  *
  * Extreme but finite values are fed to every call. include/carom.h bounds
@@ -842,7 +842,7 @@ static void add_fuzzed_joint (fuzz_world *f)
  * a removed one or a made-up id, with fuzzed motor and target values. */
 static void op_joint (fuzz_world *f)
 {
-  uint8_t what = fuzz_u8 (&f->in) % 6, pick = fuzz_u8 (&f->in);
+  uint8_t what = fuzz_u8 (&f->in) % 8, pick = fuzz_u8 (&f->in);
   double a = fuzz_number (&f->in, 0), b = fuzz_number (&f->in, 0), c = fuzz_number (&f->in, 0);
   carom_joint_id id = f->joint_count && pick < 200 ? f->joints[pick % f->joint_count]
                       : f->dead_joint_count && pick < 230 ? f->dead_joints[pick % f->dead_joint_count]
@@ -856,6 +856,22 @@ static void op_joint (fuzz_world *f)
   for (i = 0; i < f->dead_joint_count; ++i)
     if (carom_joint_check (f->w, f->dead_joints[i]) != CAROM_ERR_STALE_JOINT)
       FUZZ_FINDING ("removed joint %d came back", i);
+  {
+    /* the lists agree with the count and with each other */
+    carom_joint_id all[64], mine[64];
+    int32_t n = carom_world_get_joints (f->w, all, 64), k, m;
+    if (n != carom_world_joint_count (f->w))
+      FUZZ_FINDING ("get_joints says %d, joint_count %d", (int) n, (int) carom_world_joint_count (f->w));
+    for (k = 0; k < n && k < 64; ++k)
+      if (carom_joint_check (f->w, all[k]) != CAROM_OK)
+        FUZZ_FINDING ("get_joints lists a stale joint");
+    if (f->count > 0)
+      {
+        m = carom_body_get_joints (f->w, f->ids[pick % f->count], mine, 64);
+        if (m < 0 ? m != -CAROM_ERR_STALE_BODY : m > n)
+          FUZZ_FINDING ("body_get_joints returned %d of %d joints", (int) m, (int) n);
+      }
+  }
   if (live && carom_joint_get_bodies (f->w, id, &type, &ba, &bb) != CAROM_OK)
     FUZZ_FINDING ("a live joint's bodies cannot be read");
   if (live && (carom_body_check (f->w, bb) != CAROM_OK || (ba != CAROM_NULL_BODY && carom_body_check (f->w, ba) != CAROM_OK)))
@@ -881,6 +897,29 @@ static void op_joint (fuzz_world *f)
                 : (big || (type != CAROM_JOINT_MOTOR && type != CAROM_JOINT_MOUSE)) ? s != CAROM_ERR_BAD_ARGUMENT
                                                                                      : s != CAROM_OK)
         FUZZ_FINDING ("set_target on a %s joint of type %d returned %d", live ? "live" : "stale", (int) type, (int) s);
+      break;
+    case 4: /* the limit: lower a, upper a + |b| (or b when c < 0, maybe below a) */
+      {
+        double upper = c < 0.0 ? b : a + fabs (b);
+        int bad_type = type == CAROM_JOINT_WELD || type == CAROM_JOINT_MOTOR || type == CAROM_JOINT_MOUSE;
+        s = carom_joint_set_limit (f->w, id, 1, a, upper);
+        if (!live ? s != CAROM_ERR_STALE_JOINT
+                  : !(isfinite (a) && isfinite (upper)) ? s != CAROM_ERR_NOT_FINITE
+                  : (bad_type || too_big (a) || too_big (upper) || a > upper) ? s != CAROM_ERR_BAD_ARGUMENT
+                                                                             : s != CAROM_OK)
+          FUZZ_FINDING ("set_limit (%.17g, %.17g) on a %s joint of type %d returned %d", a, upper,
+                        live ? "live" : "stale", (int) type, (int) s);
+        break;
+      }
+    case 5:
+      s = carom_joint_set_spring (f->w, id, (pick & 1) != 0, a, b);
+      if (!live ? s != CAROM_ERR_STALE_JOINT
+                : !(isfinite (a) && isfinite (b)) ? s != CAROM_ERR_NOT_FINITE
+                : (type == CAROM_JOINT_MOTOR || a < 0.0 || b < 0.0 || too_big (a) || too_big (b))
+                    ? s != CAROM_ERR_BAD_ARGUMENT
+                    : s != CAROM_OK)
+        FUZZ_FINDING ("set_spring (%.17g, %.17g) on a %s joint of type %d returned %d", a, b, live ? "live" : "stale",
+                      (int) type, (int) s);
       break;
     case 2:
       s = carom_world_remove_joint (f->w, id);

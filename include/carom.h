@@ -735,6 +735,22 @@ CAROM_API carom_status carom_joint_check (const carom_world *world,
 /** How many live joints the world holds (0 for NULL). */
 CAROM_API int32_t carom_world_joint_count (const carom_world *world);
 
+/**
+ * Ids of the live joints in slot order, and of those of one body (in a
+ * fixed order): each writes up to `capacity` ids and returns how many there
+ * are, as carom_world_query_aabb does; on bad input it writes nothing and
+ * returns minus a carom_status: -CAROM_ERR_NULL_ARGUMENT (world, or ids
+ * with a capacity > 0), -CAROM_ERR_BAD_ARGUMENT (a negative capacity),
+ * -CAROM_ERR_STALE_BODY.
+ */
+CAROM_API int32_t carom_world_get_joints (const carom_world *world,
+                                          carom_joint_id *ids,
+                                          int32_t capacity);
+CAROM_API int32_t carom_body_get_joints (const carom_world *world,
+                                         carom_body_id id,
+                                         carom_joint_id *ids,
+                                         int32_t capacity);
+
 /** The joint's type and bodies (a is CAROM_NULL_BODY for the world); any
  * output may be NULL. Errors: NULL_ARGUMENT, STALE_JOINT. */
 CAROM_API carom_status carom_joint_get_bodies (const carom_world *world,
@@ -772,6 +788,26 @@ CAROM_API carom_status carom_joint_set_motor (carom_world *world,
                                               carom_joint_id id,
                                               int32_t enable, double speed,
                                               double max_force);
+
+/** Turn the limit on or off and set its range (revolute: the relative
+ * angle; prismatic, wheel: the translation; distance: the length); wakes
+ * the bodies. Errors: NULL_ARGUMENT, STALE_JOINT, NOT_FINITE, BAD_ARGUMENT
+ * (a weld, motor or mouse joint, lower > upper when enabling it, a
+ * magnitude beyond CAROM_MAX_MAGNITUDE). */
+CAROM_API carom_status carom_joint_set_limit (carom_world *world,
+                                              carom_joint_id id,
+                                              int32_t enable, double lower,
+                                              double upper);
+
+/** Turn the spring on or off and set its frequency and damping ratio (as
+ * carom_joint_def says; a mouse joint's are its pull, 0 for its defaults,
+ * and `enable` is ignored); wakes the bodies. Errors: NULL_ARGUMENT,
+ * STALE_JOINT, NOT_FINITE, BAD_ARGUMENT (a motor joint, a negative hertz
+ * or damping ratio, a magnitude beyond CAROM_MAX_MAGNITUDE). */
+CAROM_API carom_status carom_joint_set_spring (carom_world *world,
+                                               carom_joint_id id,
+                                               int32_t enable, double hertz,
+                                               double damping_ratio);
 
 /**
  * Move a joint's target; wakes its bodies. Mouse joint: the world point

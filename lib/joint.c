@@ -354,6 +354,45 @@ int32_t carom_world_joint_count (const carom_world *world)
   return world ? world->joints.live : 0;
 }
 
+int32_t carom_world_get_joints (const carom_world *world, carom_joint_id *ids, int32_t capacity)
+{
+  int32_t i, k = 0;
+  if (!world || (!ids && capacity > 0))
+    return -CAROM_ERR_NULL_ARGUMENT;
+  if (capacity < 0)
+    return -CAROM_ERR_BAD_ARGUMENT;
+  for (i = 0; i < world->joints.count; ++i)
+    if (world->joints.list[i].alive)
+      {
+        if (k < capacity)
+          ids[k] = joint_id_of (world, i);
+        k++;
+      }
+  return k;
+}
+
+int32_t carom_body_get_joints (const carom_world *world, carom_body_id id, carom_joint_id *ids, int32_t capacity)
+{
+  const body *b;
+  int32_t key, k = 0;
+  if (!world || (!ids && capacity > 0))
+    return -CAROM_ERR_NULL_ARGUMENT;
+  if (capacity < 0)
+    return -CAROM_ERR_BAD_ARGUMENT;
+  b = body_lookup (world, id);
+  if (!b)
+    return -CAROM_ERR_STALE_BODY;
+  for (key = b->joint_head; key;)
+    {
+      int32_t slot = (key - 1) >> 1;
+      if (k < capacity)
+        ids[k] = joint_id_of (world, slot);
+      k++;
+      key = world->joints.list[slot].next[(key - 1) & 1];
+    }
+  return k;
+}
+
 carom_status carom_joint_get_bodies (const carom_world *world, carom_joint_id id, carom_joint_type *type,
                                      carom_body_id *a, carom_body_id *b)
 {
@@ -422,6 +461,51 @@ carom_status carom_joint_set_motor (carom_world *world, carom_joint_id id, int32
   j->max_motor_force = max_force;
   if (!j->enable_motor)
     j->motor_impulse = 0.0;
+  wake_joint (world, j);
+  return CAROM_OK;
+}
+
+carom_status carom_joint_set_limit (carom_world *world, carom_joint_id id, int32_t enable, double lower, double upper)
+{
+  joint *j;
+  carom_status st = live_joint (world, id, &j);
+  if (st != CAROM_OK)
+    return st;
+  if (!is_finite (lower) || !is_finite (upper))
+    return CAROM_ERR_NOT_FINITE;
+  if (j->type == CAROM_JOINT_WELD || j->type == CAROM_JOINT_MOTOR || j->type == CAROM_JOINT_MOUSE
+      || !is_moderate (lower) || !is_moderate (upper) || (enable && lower > upper))
+    return CAROM_ERR_BAD_ARGUMENT;
+  j->enable_limit = enable != 0;
+  j->lower = lower;
+  j->upper = upper;
+  wake_joint (world, j);
+  return CAROM_OK;
+}
+
+carom_status carom_joint_set_spring (carom_world *world, carom_joint_id id, int32_t enable, double hertz,
+                                     double damping_ratio)
+{
+  joint *j;
+  carom_status st = live_joint (world, id, &j);
+  if (st != CAROM_OK)
+    return st;
+  if (!is_finite (hertz) || !is_finite (damping_ratio))
+    return CAROM_ERR_NOT_FINITE;
+  if (j->type == CAROM_JOINT_MOTOR || hertz < 0.0 || damping_ratio < 0.0 || !is_moderate (hertz)
+      || !is_moderate (damping_ratio))
+    return CAROM_ERR_BAD_ARGUMENT;
+  if (j->type == CAROM_JOINT_MOUSE)
+    {
+      j->hertz = hertz > 0.0 ? hertz : MOUSE_HERTZ;
+      j->damping_ratio = damping_ratio > 0.0 ? damping_ratio : MOUSE_DAMPING_RATIO;
+    }
+  else
+    {
+      j->enable_spring = enable != 0;
+      j->hertz = hertz;
+      j->damping_ratio = damping_ratio;
+    }
   wake_joint (world, j);
   return CAROM_OK;
 }

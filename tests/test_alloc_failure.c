@@ -367,6 +367,14 @@ static carom_status do_step (scenario *sc, carom_world *w, step_kind kind)
             return s;
           }
         sc->hinge = ids[0];
+        /* setting a limit and a spring later allocates nothing */
+        {
+          long calls = sc->alloc->calls;
+          assert_status (carom_joint_set_limit (w, ids[0], 1, -1.0, 1.0), CAROM_OK);
+          assert_status (carom_joint_set_spring (w, ids[1], 1, 3.0, 0.5), CAROM_OK);
+          if (w != sc->ref)
+            assert_true (sc->alloc->calls == calls);
+        }
         return CAROM_OK;
       }
     case PUSH: /* forces and impulses allocate nothing; they act on the next update */
@@ -384,6 +392,12 @@ static carom_status do_step (scenario *sc, carom_world *w, step_kind kind)
         assert_true (carom_world_query_aabb (w, -5.0, -1.0, 5.0, 3.0, ~0u, ids, 8) >= 0);
         assert_true (carom_world_query_point (w, 0.0, 0.5, ~0u, ids, 8) >= 0);
         assert_true (carom_world_get_events (w, NULL, 0) >= 0);
+        {
+          carom_joint_id joints[4];
+          assert_true (carom_world_get_joints (w, joints, 4) >= 0);
+          if (sc->box)
+            assert_true (carom_body_get_joints (w, sc->box, joints, 4) >= 0);
+        }
         assert_status (carom_debug_draw_init (&draw, sizeof draw), CAROM_OK);
         assert_status (carom_world_draw (w, &draw), CAROM_OK);
         {

@@ -1622,6 +1622,26 @@ static void test_joint_calls_refuse_bad_input (void **state)
     assert_status (carom_joint_set_motor (w, good, 1, 1.0, -1.0), CAROM_ERR_BAD_ARGUMENT);
     assert_status (carom_joint_set_motor (w, good, 1, 2e100, 1.0), CAROM_ERR_BAD_ARGUMENT);
     assert_status (carom_joint_set_target (w, good, 1.0, 1.0, 0.0), CAROM_ERR_BAD_ARGUMENT); /* not mouse or motor */
+    assert_status (carom_joint_set_limit (w, stale_joint, 1, -1.0, 1.0), CAROM_ERR_STALE_JOINT);
+    assert_status (carom_joint_set_spring (w, stale_joint, 1, 1.0, 1.0), CAROM_ERR_STALE_JOINT);
+    assert_status (carom_joint_set_limit (w, good, 1, NAN, 1.0), CAROM_ERR_NOT_FINITE);
+    assert_status (carom_joint_set_limit (w, good, 1, 1.0, -1.0), CAROM_ERR_BAD_ARGUMENT);
+    assert_status (carom_joint_set_limit (w, good, 1, -3e100, 1.0), CAROM_ERR_BAD_ARGUMENT);
+    assert_status (carom_joint_set_spring (w, good, 1, INFINITY, 1.0), CAROM_ERR_NOT_FINITE);
+    assert_status (carom_joint_set_spring (w, good, 1, -1.0, 1.0), CAROM_ERR_BAD_ARGUMENT);
+    assert_status (carom_joint_set_spring (w, good, 1, 1.0, -1.0), CAROM_ERR_BAD_ARGUMENT);
+    assert_status (carom_joint_set_limit (NULL, good, 1, -1.0, 1.0), CAROM_ERR_NULL_ARGUMENT);
+    assert_status (carom_joint_set_spring (NULL, good, 1, 1.0, 1.0), CAROM_ERR_NULL_ARGUMENT);
+    {
+      carom_joint_id ids[2] = { 5, 5 };
+      assert_int_equal (carom_world_get_joints (NULL, ids, 2), -CAROM_ERR_NULL_ARGUMENT);
+      assert_int_equal (carom_world_get_joints (w, NULL, 2), -CAROM_ERR_NULL_ARGUMENT);
+      assert_int_equal (carom_world_get_joints (w, ids, -1), -CAROM_ERR_BAD_ARGUMENT);
+      assert_int_equal (carom_body_get_joints (w, stale, ids, 2), -CAROM_ERR_STALE_BODY);
+      assert_int_equal (carom_body_get_joints (NULL, a, ids, 2), -CAROM_ERR_NULL_ARGUMENT);
+      assert_int_equal (carom_body_get_joints (w, a, ids, -3), -CAROM_ERR_BAD_ARGUMENT);
+      assert_true (ids[0] == 5 && ids[1] == 5);
+    }
     assert_status (carom_joint_check (NULL, good), CAROM_ERR_NULL_ARGUMENT);
     assert_status (carom_world_remove_joint (NULL, good), CAROM_ERR_NULL_ARGUMENT);
     assert_status (carom_joint_get_bodies (NULL, good, NULL, NULL, NULL), CAROM_ERR_NULL_ARGUMENT);
@@ -1641,6 +1661,7 @@ static void test_joint_calls_refuse_bad_input (void **state)
     assert_status (carom_joint_set_target (w, id, NAN, 1.0, 0.0), CAROM_ERR_NOT_FINITE);
     assert_status (carom_joint_set_target (w, id, 1.0, -2e100, 0.0), CAROM_ERR_BAD_ARGUMENT);
     assert_status (carom_joint_set_motor (w, id, 1, 1.0, 1.0), CAROM_ERR_BAD_ARGUMENT); /* a mouse has no motor */
+    assert_status (carom_joint_set_limit (w, id, 1, -1.0, 1.0), CAROM_ERR_BAD_ARGUMENT); /* nor a limit */
     assert_true (world_state_hash (w) == before);
   }
   carom_world_destroy (w);

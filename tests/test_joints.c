@@ -677,6 +677,79 @@ static void test_joints_go_with_their_bodies (void **state)
   carom_world_destroy (w);
 }
 
+/* The world's and a body's joints are listed, and follow removals. */
+static void test_joints_are_listed (void **state)
+{
+  carom_world *w = new_world (G);
+  carom_body_id a = add_disc (w, 0.0, 0.0, 0.2), b = add_disc (w, 1.0, 0.0, 0.2), c = add_disc (w, 2.0, 0.0, 0.2);
+  carom_joint_id ab = add_joint (w, CAROM_JOINT_REVOLUTE, a, b, 0.5, 0.0);
+  carom_joint_id bc = add_joint (w, CAROM_JOINT_WELD, b, c, 1.5, 0.0);
+  carom_joint_id wa = add_joint (w, CAROM_JOINT_REVOLUTE, CAROM_NULL_BODY, a, 0.0, 1.0);
+  carom_joint_id ids[4] = { 0, 0, 0, 0 };
+  (void) state;
+  assert_int_equal (carom_world_get_joints (w, NULL, 0), 3);
+  assert_int_equal (carom_world_get_joints (w, ids, 2), 3);
+  assert_true (ids[0] == ab && ids[1] == bc && ids[2] == 0);
+  assert_int_equal (carom_world_get_joints (w, ids, 4), 3);
+  assert_true (ids[2] == wa);
+  assert_int_equal (carom_body_get_joints (w, b, ids, 4), 2);
+  assert_true ((ids[0] == ab && ids[1] == bc) || (ids[0] == bc && ids[1] == ab));
+  assert_int_equal (carom_body_get_joints (w, a, NULL, 0), 2);
+  assert_int_equal (carom_body_get_joints (w, c, ids, 4), 1);
+  assert_true (ids[0] == bc);
+  assert_status (carom_world_remove_body (w, b), CAROM_OK);
+  assert_int_equal (carom_world_get_joints (w, ids, 4), 1);
+  assert_true (ids[0] == wa);
+  assert_int_equal (carom_body_get_joints (w, c, ids, 4), 0);
+  assert_int_equal (carom_body_get_joints (w, b, ids, 4), -CAROM_ERR_STALE_BODY);
+  carom_world_destroy (w);
+}
+
+/* A limit and a spring set after creation act as if given at it: a bar
+ * swinging down stops at a limit set while it falls, and a distance joint
+ * made rigid and then given a 1 Hz spring oscillates at 1 Hz. */
+static void test_limit_and_spring_set_later (void **state)
+{
+  carom_world *w = new_world (G);
+  carom_body_id bar = add_box (w, CAROM_DYNAMIC, 0.5, 0.0, 0.0, 1.0, 0.1);
+  carom_joint_id hinge = add_joint (w, CAROM_JOINT_REVOLUTE, CAROM_NULL_BODY, bar, 0.0, 0.0);
+  carom_world *v = new_world (0.0);
+  carom_body_id bob = add_disc (v, 2.2, 0.0, 0.1);
+  carom_joint_def d;
+  carom_joint_id rope;
+  crossings c;
+  double angle, lowest = 0.0, x, y;
+  int s;
+  (void) state;
+  step (w, 5);
+  assert_status (carom_joint_set_limit (w, hinge, 1, -0.6, 0.6), CAROM_OK);
+  for (s = 0; s < 120; ++s)
+    {
+      step (w, 1);
+      carom_body_get_angle (w, bar, &angle);
+      lowest = angle < lowest ? angle : lowest;
+    }
+  assert_true (lowest > -0.6 - 0.5 * M_PI / 180.0 && lowest < -0.55);
+  assert_status (carom_joint_set_limit (w, hinge, 0, 0.0, 0.0), CAROM_OK);
+  step (w, 60);
+  carom_body_get_angle (w, bar, &angle);
+  assert_true (angle < -0.7); /* free again, it swings on down */
+  carom_joint_def_init (&d, sizeof d);
+  d.type = CAROM_JOINT_DISTANCE, d.b = bob, d.x2 = 2.2, d.length = 2.0;
+  assert_status (carom_world_add_joint (v, &d, &rope), CAROM_OK);
+  assert_status (carom_joint_set_spring (v, rope, 1, 1.0, 0.0), CAROM_OK);
+  crossings_init (&c, 2.0, 2.2);
+  for (s = 0; s < 600; ++s)
+    {
+      step (v, 1);
+      carom_body_get_position (v, bob, &x, &y);
+      crossings_add (&c, x);
+    }
+  assert_near_rel (crossings_period (&c), 1.0, 2e-2);
+  carom_world_destroy (w);
+  carom_world_destroy (v);
+}
+
 /* collide_connected keeps the bodies' contact. */
 static void test_collide_connected_keeps_contact (void **state)
 {
@@ -783,6 +856,8 @@ int main (void)
     cmocka_unit_test (test_mouse_and_motor_joints_reach_targets),
     cmocka_unit_test (test_wheel_joints_drive_a_car),
     cmocka_unit_test (test_joints_go_with_their_bodies),
+    cmocka_unit_test (test_joints_are_listed),
+    cmocka_unit_test (test_limit_and_spring_set_later),
     cmocka_unit_test (test_collide_connected_keeps_contact),
     cmocka_unit_test (test_joined_bodies_sleep_and_wake_together),
     cmocka_unit_test (test_two_worlds_step_joints_alike),

@@ -485,13 +485,16 @@ class World:
             return None
         return RayHit(Body(self, hit.body), (hit.x, hit.y), (hit.nx, hit.ny), hit.fraction)
 
-    def _listed(self, call, what):
+    def _listed(self, call, what, handle=None):
+        # ids from a call of carom_world_query_aabb's kind (a count, or
+        # minus a status), as Body handles, or Joint ones (handle=Joint:
+        # carom_joint_id is the same uint64 as carom_body_id)
         n = call(None, 0)
         if n < 0:
             _check(-n, what)
         ids = (_native.c_body_id * max(n, 1))()
         n = min(n, call(ids, n))
-        return [Body(self, ids[i]) for i in range(n)]
+        return [(handle or Body)(self, ids[i]) for i in range(n)]
 
     def query_point(self, point, mask=ALL):
         """The bodies whose shape contains the point, in creation order."""
@@ -740,6 +743,14 @@ class World:
         """How many live joints the world holds."""
         return _lib.carom_world_joint_count(self._handle())
 
+    @property
+    def joints(self):
+        """The live joints, as Joint handles in slot order (a removed
+        joint's slot is reused by the next joint added)."""
+        h = self._handle()
+        return self._listed(lambda ids, cap: _lib.carom_world_get_joints(h, ids, cap), "joints",
+                            Joint)
+
 
 def _joint_type_of(value):
     """A joint type for the C def: a JointType, its name, or an int (which
@@ -869,6 +880,27 @@ class Joint:
                                           _finite(speed, "speed"), _finite(max_force, "max_force")),
                "set_motor")
 
+    def set_limit(self, lower=0.0, upper=0.0, enabled=True):
+        """Turn the limit on (or off: enabled=False) with its range, lower
+        <= upper: the relative angle from creation (revolute), the
+        translation (prismatic, wheel) or the length (distance); wakes the
+        bodies. Weld, motor and mouse joints have no limit
+        (Status.BAD_ARGUMENT)."""
+        _check(_lib.carom_joint_set_limit(self._h(), self._id, 1 if enabled else 0,
+                                          _finite(lower, "lower"), _finite(upper, "upper")),
+               "set_limit")
+
+    def set_spring(self, hertz=0.0, damping_ratio=0.0, enabled=True):
+        """Turn the spring on (or off: enabled=False) with its frequency and
+        damping ratio (both >= 0; 1 is critical damping), as add_joint's
+        spring=(hertz, damping_ratio); wakes the bodies. A mouse joint's are
+        its pull (0: its defaults, 5 Hz and 0.7; `enabled` is ignored); a
+        motor joint has none (Status.BAD_ARGUMENT)."""
+        _check(_lib.carom_joint_set_spring(self._h(), self._id, 1 if enabled else 0,
+                                           _finite(hertz, "hertz"),
+                                           _finite(damping_ratio, "damping_ratio")),
+               "set_spring")
+
     def set_target(self, x, y, angle=0.0):
         """Move the target; wakes the bodies. Mouse joint: the world point
         b's grabbed point is pulled to (angle ignored). Motor joint: the
@@ -933,6 +965,14 @@ class Body:
         """Remove the body from its world; the handle becomes stale."""
         _check(_lib.carom_world_remove_body(self._h(), self._id), "remove")
         self._world._user_data.pop(self._id, None)
+
+    @property
+    def joints(self):
+        """The live joints the body is one of the two bodies of, as Joint
+        handles (in a fixed order, not that of World.joints)."""
+        h, body = self._h(), self._id
+        return self._world._listed(
+            lambda ids, cap: _lib.carom_body_get_joints(h, body, ids, cap), "joints", Joint)
 
     @property
     def awake(self):

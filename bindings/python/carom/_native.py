@@ -308,12 +308,16 @@ PROTOTYPES = {
     "carom_world_remove_joint": (c_status, [_W, _JID]),
     "carom_joint_check": (c_status, [_W, _JID]),
     "carom_world_joint_count": (ctypes.c_int32, [_W]),
+    "carom_world_get_joints": (ctypes.c_int32, [_W, c_joint_id_p, ctypes.c_int32]),
+    "carom_body_get_joints": (ctypes.c_int32, [_W, _ID, c_joint_id_p, ctypes.c_int32]),
     "carom_joint_get_bodies": (
         c_status, [_W, _JID, ctypes.POINTER(ctypes.c_int), c_body_id_p, c_body_id_p]),
     "carom_joint_get_anchors": (
         c_status, [_W, _JID, c_double_p, c_double_p, c_double_p, c_double_p]),
     "carom_joint_get_reaction": (c_status, [_W, _JID, c_double_p, c_double_p, c_double_p]),
     "carom_joint_set_motor": (c_status, [_W, _JID, ctypes.c_int32, _D, _D]),
+    "carom_joint_set_limit": (c_status, [_W, _JID, ctypes.c_int32, _D, _D]),
+    "carom_joint_set_spring": (c_status, [_W, _JID, ctypes.c_int32, _D, _D]),
     "carom_joint_set_target": (c_status, [_W, _JID, _D, _D, _D]),
     "carom_debug_draw_init": (c_status, [ctypes.c_void_p, ctypes.c_uint32]),
     "carom_world_draw": (c_status, [_W, ctypes.POINTER(DebugDraw)]),

@@ -253,7 +253,8 @@ def test_removing_a_body_makes_its_joints_stale():
             assert not joint.is_alive
             for use in (lambda: joint.reaction, lambda: joint.anchors, lambda: joint.bodies,
                         lambda: joint.type, joint.remove, lambda: joint.set_motor(1.0, 1.0),
-                        lambda: joint.set_target(0.0, 0.0)):
+                        lambda: joint.set_target(0.0, 0.0), lambda: joint.set_limit(-1.0, 1.0),
+                        lambda: joint.set_spring(1.0, 0.5)):
                 with pytest.raises(carom.CaromError) as err:
                     use()
                 assert err.value.status == carom.Status.STALE_JOINT
@@ -275,7 +276,8 @@ def test_removing_a_body_makes_its_joints_stale():
 
 def test_joint_of_a_closed_world_raises_cleanly():
     world = carom.World()
-    joint = world.add_joint("revolute", b=world.add_circle(1.0))
+    disc = world.add_circle(1.0)
+    joint = world.add_joint("revolute", b=disc)
     world.close()
     assert not joint.is_alive
     with pytest.raises(carom.ClosedWorldError) as err:
@@ -283,6 +285,13 @@ def test_joint_of_a_closed_world_raises_cleanly():
     assert err.value.status == carom.Status.STALE_JOINT and "closed" in str(err.value)
     with pytest.raises(carom.ClosedWorldError):
         world.joint_count
+    with pytest.raises(carom.ClosedWorldError):
+        world.joints
+    with pytest.raises(carom.ClosedWorldError) as err:
+        disc.joints
+    assert err.value.status == carom.Status.STALE_BODY
+    with pytest.raises(carom.ClosedWorldError):
+        joint.set_limit(-1.0, 1.0)
 
 
 @pytest.mark.parametrize("make, status", [
@@ -338,6 +347,183 @@ def test_wrong_python_arguments_raise_before_the_library():
         with pytest.raises(ValueError):
             world.add_joint("mouse", b=ball, motor=(0.0, 1.0), max_motor_force=1.0)
         assert world.joint_count == 0
+
+
+# ------------------------------------- listing, limits and springs set later
+
+def test_world_and_body_list_their_joints():
+    with carom.World() as world:
+        assert world.joints == []
+        ground = world.add_box(10.0, 1.0, static=True)
+        a = world.add_circle(0.5, y=2.0)
+        b = world.add_circle(0.5, x=2.0, y=2.0)
+        c = world.add_circle(0.5, x=4.0, y=2.0)
+        assert a.joints == [] and ground.joints == []
+        hinge = world.add_joint("revolute", a=ground, b=a, x=0.0, y=2.0)
+        rod = world.add_joint("distance", a=a, b=b, x=0.0, y=2.0, x2=2.0, y2=2.0)
+        weld = world.add_joint("weld", a=b, b=c, x=3.0, y=2.0)
+        pin = world.add_joint("revolute", b=c, x=4.0, y=3.0)  # to the world
+        assert world.joints == [hinge, rod, weld, pin]  # slot order
+        assert all(isinstance(j, carom.Joint) and j.world is world for j in world.joints)
+        # a body's own, each once (in a fixed order of its own)
+        for body, mine in ((ground, {hinge}), (a, {hinge, rod}), (b, {rod, weld}),
+                           (c, {weld, pin})):
+            listed = body.joints
+            assert len(listed) == len(mine) and set(listed) == mine
+            assert all(body in j.bodies for j in listed)
+        # a joint removed on its own vanishes from both lists
+        rod.remove()
+        assert world.joints == [hinge, weld, pin]
+        assert a.joints == [hinge] and b.joints == [weld]
+        # its slot is reused: the new joint is listed there, the old handle is not
+        rail = world.add_joint("prismatic", a=ground, b=b, x=2.0, y=2.0, axis=(1.0, 0.0))
+        assert rail.index == (2, 2) and world.joints == [hinge, rail, weld, pin]
+        assert set(b.joints) == {rail, weld} and rod not in world.joints
+        # a removed body's joints vanish from every list, and its own raises
+        b.remove()
+        assert world.joints == [hinge, pin] and world.joint_count == 2
+        assert ground.joints == [hinge] and c.joints == [pin] and a.joints == [hinge]
+        with pytest.raises(carom.CaromError) as err:
+            b.joints
+        assert err.value.status == carom.Status.STALE_BODY
+        assert carom.status_string(carom.Status.STALE_BODY) in err.value.message
+        for body in (a, c):
+            body.remove()
+        assert world.joints == [] and ground.joints == [] and world.joint_count == 0
+
+
+def test_joint_lists_through_the_raw_calls():
+    # the query_aabb convention: the count whatever the capacity, or minus a status
+    lib = _native.lib
+    with carom.World() as world:
+        bob = world.add_circle(0.5)
+        first = world.add_joint("revolute", b=bob)
+        second = world.add_joint("revolute", b=bob, x=1.0)
+        one = (_native.c_joint_id * 1)()
+        assert lib.carom_world_get_joints(world._ptr, one, 1) == 2 and one[0] == first.id
+        assert lib.carom_world_get_joints(world._ptr, None, 0) == 2
+        assert lib.carom_body_get_joints(world._ptr, bob.id, None, 0) == 2
+        assert lib.carom_world_get_joints(None, None, 0) == -carom.Status.NULL_ARGUMENT
+        assert lib.carom_world_get_joints(world._ptr, None, 1) == -carom.Status.NULL_ARGUMENT
+        assert lib.carom_world_get_joints(world._ptr, one, -1) == -carom.Status.BAD_ARGUMENT
+        assert lib.carom_body_get_joints(world._ptr, bob.id, one, -1) == -carom.Status.BAD_ARGUMENT
+        assert lib.carom_body_get_joints(world._ptr, 0, None, 0) == -carom.Status.STALE_BODY
+        assert {first, second} == set(bob.joints)
+
+
+def test_set_limit_stops_a_swinging_bar_at_the_new_limit():
+    # a 2 m bar pinned at its left end, released horizontally: its limit
+    # holds it at -0.3 rad; widened to -1, it swings down and stops there
+    one_degree = math.radians(1.0)
+    with carom.World(gravity=(0.0, -G)) as world:
+        bar = world.add_box(2.0, 0.1, x=1.0)
+        hinge = world.add_joint("revolute", b=bar, x=0.0, y=0.0, limit=(-0.3, 0.3))
+        for _ in range(120):
+            world.step(1 / 60)
+        assert bar.angle == pytest.approx(-0.3, abs=one_degree)
+        hinge.set_limit(-1.0, 0.3)
+        lowest = 0.0
+        for _ in range(180):
+            world.step(1 / 60)
+            lowest = min(lowest, bar.angle)
+        assert lowest >= -1.0 - one_degree  # never past the new limit
+        assert bar.angle == pytest.approx(-1.0, abs=one_degree)  # and at rest on it
+        assert abs(bar.spin) < 0.01
+        # a failed call changes nothing: the limit still holds
+        with pytest.raises(carom.CaromError) as err:
+            hinge.set_limit(0.5, -0.5)
+        assert err.value.status == carom.Status.BAD_ARGUMENT
+        for _ in range(60):
+            world.step(1 / 60)
+        assert bar.angle == pytest.approx(-1.0, abs=one_degree)
+        # switched off, the bar swings on down past the vertical
+        hinge.set_limit(enabled=False)
+        for _ in range(60):
+            world.step(1 / 60)
+            lowest = min(lowest, bar.angle)
+        assert lowest < -math.pi / 2
+
+
+def test_set_spring_of_one_hertz_gives_a_period_of_one_second():
+    # a rigid distance joint turned into an undamped 1 Hz spring: the bob
+    # bobs about its stretch with a period of 1 s, whatever its mass
+    dt = 1 / 240
+    with carom.World(gravity=(0.0, -G)) as world:
+        bob = world.add_circle(0.1, y=-1.0, density=3.0)
+        rod = world.add_joint("distance", b=bob, x2=0.0, y2=-1.0)
+        for _ in range(30):
+            world.step(dt)
+        assert bob.position == pytest.approx((0.0, -1.0), abs=1e-9)  # rigid so far
+        rod.set_spring(1.0, 0.0)
+        t, prev, ups = 0.0, bob.velocity[1], []
+        for _ in range(5 * 240):
+            world.step(dt)
+            t += dt
+            vy = bob.velocity[1]
+            if prev < 0.0 <= vy:  # the bottom of a bob
+                ups.append(t - dt * vy / (vy - prev))
+            prev = vy
+        assert len(ups) >= 4
+        period = (ups[-1] - ups[0]) / (len(ups) - 1)
+        assert period == pytest.approx(1.0, rel=0.05)
+        # switched off (hertz 0 or enabled=False): rigid again at its length
+        rod.set_spring(1.0, 0.0, enabled=False)
+        for _ in range(240):
+            world.step(dt)
+        assert math.hypot(*bob.position) == pytest.approx(1.0, abs=1e-3)
+
+
+@pytest.mark.parametrize("call, status", [
+    (lambda j: j["hinge"].set_limit(1.0, -1.0), carom.Status.BAD_ARGUMENT),  # lower > upper
+    (lambda j: j["hinge"].set_limit(-1.0, 1e101), carom.Status.BAD_ARGUMENT),
+    (lambda j: j["hinge"].set_limit(math.nan, 1.0), carom.Status.NOT_FINITE),
+    (lambda j: j["hinge"].set_limit(-1.0, math.inf), carom.Status.NOT_FINITE),
+    (lambda j: j["weld"].set_limit(-1.0, 1.0), carom.Status.BAD_ARGUMENT),
+    (lambda j: j["motor"].set_limit(-1.0, 1.0), carom.Status.BAD_ARGUMENT),
+    (lambda j: j["mouse"].set_limit(-1.0, 1.0), carom.Status.BAD_ARGUMENT),
+    (lambda j: j["rope"].set_spring(-1.0, 0.5), carom.Status.BAD_ARGUMENT),  # negative hertz
+    (lambda j: j["rope"].set_spring(1.0, -0.5), carom.Status.BAD_ARGUMENT),
+    (lambda j: j["rope"].set_spring(1e101, 0.5), carom.Status.BAD_ARGUMENT),
+    (lambda j: j["rope"].set_spring(math.nan, 0.5), carom.Status.NOT_FINITE),
+    (lambda j: j["motor"].set_spring(1.0, 0.5), carom.Status.BAD_ARGUMENT),  # a motor joint's
+    (lambda j: j["mouse"].set_spring(-1.0, 0.5), carom.Status.BAD_ARGUMENT),
+])
+def test_bad_limit_and_spring_raise_with_the_status(call, status):
+    with carom.World() as world:
+        ground = world.add_box(10.0, 1.0, static=True)
+        box = world.add_box(1.0, 1.0, y=2.0)
+        joints = {
+            "hinge": world.add_joint("revolute", a=ground, b=box, x=0.0, y=2.0),
+            "rope": world.add_joint("distance", a=ground, b=box, x2=0.0, y2=2.0),
+            "weld": world.add_joint("weld", a=ground, b=box, x=0.0, y=2.0),
+            "motor": world.add_joint("motor", a=ground, b=box, max_motor_force=1.0),
+            "mouse": world.add_joint("mouse", b=box, x=0.0, y=2.0),
+        }
+        with pytest.raises(carom.CaromError) as err:
+            call(joints)
+        assert err.value.status == status
+        assert carom.status_string(status) in err.value.message
+        assert world.joints == list(joints.values())  # nothing removed either
+
+
+def test_limit_and_spring_calls_that_are_accepted():
+    with carom.World() as world:
+        ground = world.add_box(10.0, 1.0, static=True)
+        box = world.add_box(1.0, 1.0, y=2.0)
+        hinge = world.add_joint("revolute", a=ground, b=box, x=0.0, y=2.0)
+        hinge.set_limit(0.0, 0.0)  # lower == upper: locked
+        hinge.set_spring(2.0, 1.0)  # a torsion spring
+        hinge.set_spring(0.0, 0.0)
+        world.add_joint("prismatic", b=box, x=0.0, y=2.0, axis=(0.0, 1.0)).set_limit(-1.0, 1.0)
+        world.add_joint("wheel", b=box, x=0.0, y=2.0, axis=(0.0, 1.0)).set_spring(4.0, 0.7)
+        world.add_joint("weld", a=ground, b=box, x=0.0, y=2.0).set_spring(5.0, 0.5)
+        mouse = world.add_joint("mouse", b=box, x=0.0, y=2.0)
+        mouse.set_spring()  # 0, 0: the mouse joint's defaults
+        mouse.set_spring(10.0, 0.9, enabled=False)  # a mouse joint ignores enabled
+        with pytest.raises(TypeError):
+            hinge.set_limit("low", 1.0)
+        with pytest.raises(TypeError):
+            hinge.set_spring(None, 1.0)
 
 
 # ------------------------------------------------------------- debug draw

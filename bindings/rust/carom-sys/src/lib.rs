@@ -503,6 +503,8 @@ extern "C" {
     pub fn carom_world_remove_joint(world: *mut carom_world, id: carom_joint_id) -> carom_status;
     pub fn carom_joint_check(world: *const carom_world, id: carom_joint_id) -> carom_status;
     pub fn carom_world_joint_count(world: *const carom_world) -> i32;
+    pub fn carom_world_get_joints(world: *const carom_world, ids: *mut carom_joint_id, capacity: i32) -> i32;
+    pub fn carom_body_get_joints(world: *const carom_world, id: carom_body_id, ids: *mut carom_joint_id, capacity: i32) -> i32;
     pub fn carom_joint_get_bodies(
         world: *const carom_world,
         id: carom_joint_id,
@@ -526,6 +528,8 @@ extern "C" {
         torque: *mut f64,
     ) -> carom_status;
     pub fn carom_joint_set_motor(world: *mut carom_world, id: carom_joint_id, enable: i32, speed: f64, max_force: f64) -> carom_status;
+    pub fn carom_joint_set_limit(world: *mut carom_world, id: carom_joint_id, enable: i32, lower: f64, upper: f64) -> carom_status;
+    pub fn carom_joint_set_spring(world: *mut carom_world, id: carom_joint_id, enable: i32, hertz: f64, damping_ratio: f64) -> carom_status;
     pub fn carom_joint_set_target(world: *mut carom_world, id: carom_joint_id, x: f64, y: f64, angle: f64) -> carom_status;
     pub fn carom_debug_draw_init(draw: *mut carom_debug_draw, size: u32) -> carom_status;
     pub fn carom_world_draw(world: *const carom_world, draw: *const carom_debug_draw) -> carom_status;

@@ -819,6 +819,8 @@ impl World {
         }))
     }
 
+    /// The ids a call of `carom_world_query_aabb`'s kind gives (a count, or
+    /// minus a status); body and joint ids alike, both `u64`.
     fn listed(&self, call: impl Fn(*mut carom_body_id, i32) -> i32) -> Result<Vec<carom_body_id>> {
         let n = count(call(ptr::null_mut(), 0))?;
         let mut ids = vec![0; n];
@@ -899,6 +901,22 @@ impl World {
         unsafe { carom_world_joint_count(self.as_ptr()) }.max(0) as usize
     }
 
+    /// The live joints' ids in slot order (a removed joint's slot is
+    /// reused by the next joint added).
+    pub fn joints(&self) -> Vec<carom_joint_id> {
+        let n = unsafe { carom_world_get_joints(self.as_ptr(), ptr::null_mut(), 0) }.max(0);
+        let mut ids = vec![CAROM_NULL_JOINT; n as usize];
+        let got = unsafe { carom_world_get_joints(self.as_ptr(), ids.as_mut_ptr(), n) };
+        ids.truncate(got.clamp(0, n) as usize);
+        ids
+    }
+
+    /// The live joints of one body (it is their a or b), in a fixed order
+    /// of their own; `CAROM_ERR_STALE_BODY` for a removed body.
+    pub fn body_joints(&self, id: carom_body_id) -> Result<Vec<carom_joint_id>> {
+        self.listed(|ids, cap| unsafe { carom_body_get_joints(self.as_ptr(), id, ids, cap) })
+    }
+
     pub fn joint_type(&self, id: carom_joint_id) -> Result<carom_joint_type> {
         let mut t = 0;
         check(unsafe { carom_joint_get_bodies(self.as_ptr(), id, &mut t, ptr::null_mut(), ptr::null_mut()) })?;
@@ -932,6 +950,22 @@ impl World {
     /// torque for revolute and wheel joints); wakes the bodies.
     pub fn set_joint_motor(&mut self, id: carom_joint_id, enable: bool, speed: f64, max_force: f64) -> Result<()> {
         check(unsafe { carom_joint_set_motor(self.as_ptr(), id, enable as i32, speed, max_force) })
+    }
+
+    /// Turn a joint's limit on or off, with its range (`lower <= upper`):
+    /// the relative angle from creation (revolute), the translation
+    /// (prismatic, wheel) or the length (distance); wakes the bodies. Weld,
+    /// motor and mouse joints have none (`CAROM_ERR_BAD_ARGUMENT`).
+    pub fn set_joint_limit(&mut self, id: carom_joint_id, enable: bool, lower: f64, upper: f64) -> Result<()> {
+        check(unsafe { carom_joint_set_limit(self.as_ptr(), id, enable as i32, lower, upper) })
+    }
+
+    /// Turn a joint's spring on or off, with its frequency and damping
+    /// ratio (both >= 0, as [`JointDef::spring`]); wakes the bodies. A
+    /// mouse joint's are its pull (0 for its defaults; `enable` is
+    /// ignored); a motor joint has none (`CAROM_ERR_BAD_ARGUMENT`).
+    pub fn set_joint_spring(&mut self, id: carom_joint_id, enable: bool, hertz: f64, damping_ratio: f64) -> Result<()> {
+        check(unsafe { carom_joint_set_spring(self.as_ptr(), id, enable as i32, hertz, damping_ratio) })
     }
 
     /// Move a mouse joint's target (the world point (x, y); `angle` is

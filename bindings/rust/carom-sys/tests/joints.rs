@@ -113,6 +113,8 @@ fn removing_a_body_makes_its_joints_stale() {
         assert_eq!(world.joint_bodies(id).unwrap_err().status, CAROM_ERR_STALE_JOINT);
         assert_eq!(world.set_joint_motor(id, true, 1.0, 1.0).unwrap_err().status, CAROM_ERR_STALE_JOINT);
         assert_eq!(world.set_joint_target(id, 0.0, 0.0, 0.0).unwrap_err().status, CAROM_ERR_STALE_JOINT);
+        assert_eq!(world.set_joint_limit(id, true, -1.0, 1.0).unwrap_err().status, CAROM_ERR_STALE_JOINT);
+        assert_eq!(world.set_joint_spring(id, true, 1.0, 0.5).unwrap_err().status, CAROM_ERR_STALE_JOINT);
         let err = world.remove_joint(id).unwrap_err();
         assert_eq!(err.status, CAROM_ERR_STALE_JOINT);
         assert_eq!(err.message, safe::status_string(CAROM_ERR_STALE_JOINT));
@@ -277,4 +279,215 @@ fn draw_joints_gives_the_four_points() {
     let (mut polys, mut circles) = (0, 0);
     world.draw(|_, _| polys += 1, |_, _, _, _| circles += 1).unwrap();
     assert_eq!((polys, circles), (2, 1));
+}
+
+fn sorted(mut ids: Vec<carom_joint_id>) -> Vec<carom_joint_id> {
+    ids.sort_unstable();
+    ids
+}
+
+#[test]
+fn world_and_body_list_their_joints() {
+    let mut world = World::new().unwrap();
+    assert_eq!(world.joints(), Vec::<carom_joint_id>::new());
+    let ground = world.add_box(&static_at(0.0, 0.0), 10.0, 1.0).unwrap();
+    let a = world.add_circle(&dynamic_at(0.0, 2.0), 0.5).unwrap();
+    let b = world.add_circle(&dynamic_at(2.0, 2.0), 0.5).unwrap();
+    let c = world.add_circle(&dynamic_at(4.0, 2.0), 0.5).unwrap();
+    assert!(world.body_joints(a).unwrap().is_empty() && world.body_joints(ground).unwrap().is_empty());
+    let hinge = world.add_joint(&JointDef::revolute(ground, a, (0.0, 2.0))).unwrap();
+    let rod = world.add_joint(&JointDef::distance(a, b, (0.0, 2.0), (2.0, 2.0))).unwrap();
+    let weld = world.add_joint(&JointDef::weld(b, c, (3.0, 2.0))).unwrap();
+    let pin = world.add_joint(&JointDef::revolute(CAROM_NULL_BODY, c, (4.0, 3.0))).unwrap();
+    assert_eq!(world.joints(), vec![hinge, rod, weld, pin]); // slot order
+    // a body's own, each once, in an order of their own
+    for (body, mine) in [(ground, vec![hinge]), (a, vec![hinge, rod]), (b, vec![rod, weld]), (c, vec![weld, pin])] {
+        let listed = world.body_joints(body).unwrap();
+        assert_eq!(sorted(listed.clone()), sorted(mine));
+        for j in listed {
+            let (ja, jb) = world.joint_bodies(j).unwrap();
+            assert!(ja == body || jb == body);
+        }
+    }
+    // a joint removed on its own vanishes from both lists
+    world.remove_joint(rod).unwrap();
+    assert_eq!(world.joints(), vec![hinge, weld, pin]);
+    assert_eq!(world.body_joints(a).unwrap(), vec![hinge]);
+    assert_eq!(world.body_joints(b).unwrap(), vec![weld]);
+    // its slot is reused by the next joint, listed there; the old id is not
+    let rail = world.add_joint(&JointDef::prismatic(ground, b, (2.0, 2.0), (1.0, 0.0))).unwrap();
+    assert_eq!(world.joints(), vec![hinge, rail, weld, pin]);
+    assert_eq!(sorted(world.body_joints(b).unwrap()), sorted(vec![rail, weld]));
+    assert!(!world.joints().contains(&rod));
+    // a removed body's joints vanish from every list, and its own is an error
+    world.remove_body(b).unwrap();
+    assert_eq!(world.joints(), vec![hinge, pin]);
+    assert_eq!(world.joint_count(), 2);
+    assert_eq!(world.body_joints(ground).unwrap(), vec![hinge]);
+    assert_eq!(world.body_joints(a).unwrap(), vec![hinge]);
+    assert_eq!(world.body_joints(c).unwrap(), vec![pin]);
+    let err = world.body_joints(b).unwrap_err();
+    assert_eq!(err.status, CAROM_ERR_STALE_BODY);
+    assert_eq!(err.message, safe::status_string(CAROM_ERR_STALE_BODY));
+    world.remove_body(a).unwrap();
+    world.remove_body(c).unwrap();
+    assert!(world.joints().is_empty() && world.body_joints(ground).unwrap().is_empty());
+}
+
+#[test]
+fn joint_lists_through_the_raw_calls() {
+    // the carom_world_query_aabb convention: the count whatever the
+    // capacity, or minus a status, writing nothing then
+    let mut world = World::new().unwrap();
+    let bob = world.add_circle(&safe::body_def(), 0.5).unwrap();
+    let first = world.add_joint(&JointDef::revolute(CAROM_NULL_BODY, bob, (0.0, 0.0))).unwrap();
+    let second = world.add_joint(&JointDef::revolute(CAROM_NULL_BODY, bob, (1.0, 0.0))).unwrap();
+    let w = world.as_ptr();
+    let mut one = [CAROM_NULL_JOINT; 1];
+    unsafe {
+        assert_eq!(carom_world_get_joints(w, one.as_mut_ptr(), 1), 2);
+        assert_eq!(one[0], first);
+        assert_eq!(carom_world_get_joints(w, ptr::null_mut(), 0), 2);
+        assert_eq!(carom_body_get_joints(w, bob, ptr::null_mut(), 0), 2);
+        let mut none = [CAROM_NULL_JOINT; 1];
+        assert_eq!(carom_world_get_joints(ptr::null(), none.as_mut_ptr(), 1), -CAROM_ERR_NULL_ARGUMENT);
+        assert_eq!(carom_world_get_joints(w, ptr::null_mut(), 1), -CAROM_ERR_NULL_ARGUMENT);
+        assert_eq!(carom_world_get_joints(w, none.as_mut_ptr(), -1), -CAROM_ERR_BAD_ARGUMENT);
+        assert_eq!(carom_body_get_joints(ptr::null(), bob, none.as_mut_ptr(), 1), -CAROM_ERR_NULL_ARGUMENT);
+        assert_eq!(carom_body_get_joints(w, bob, ptr::null_mut(), 1), -CAROM_ERR_NULL_ARGUMENT);
+        assert_eq!(carom_body_get_joints(w, bob, none.as_mut_ptr(), -1), -CAROM_ERR_BAD_ARGUMENT);
+        assert_eq!(carom_body_get_joints(w, CAROM_NULL_BODY, none.as_mut_ptr(), 1), -CAROM_ERR_STALE_BODY);
+        assert_eq!(none[0], CAROM_NULL_JOINT); // nothing written
+        assert_eq!(carom_joint_set_limit(ptr::null_mut(), first, 1, 0.0, 1.0), CAROM_ERR_NULL_ARGUMENT);
+        assert_eq!(carom_joint_set_spring(ptr::null_mut(), first, 1, 1.0, 0.0), CAROM_ERR_NULL_ARGUMENT);
+    }
+    assert_eq!(sorted(world.body_joints(bob).unwrap()), sorted(vec![first, second]));
+}
+
+#[test]
+fn set_joint_limit_stops_a_swinging_bar_at_the_new_limit() {
+    // a 2 m bar pinned at its left end, released horizontally: its limit
+    // holds it at -0.3 rad; widened to -1, it swings down and stops there
+    let one_degree = 1.0f64.to_radians();
+    let mut world = world_with_gravity(-G);
+    let bar = world.add_box(&dynamic_at(1.0, 0.0), 2.0, 0.1).unwrap();
+    let hinge = world.add_joint(&JointDef::revolute(CAROM_NULL_BODY, bar, (0.0, 0.0)).limit(-0.3, 0.3)).unwrap();
+    for _ in 0..120 {
+        world.step(1.0 / 60.0).unwrap();
+    }
+    assert!(close(world.angle(bar).unwrap(), -0.3, one_degree));
+    world.set_joint_limit(hinge, true, -1.0, 0.3).unwrap();
+    let mut lowest = 0.0f64;
+    for _ in 0..180 {
+        world.step(1.0 / 60.0).unwrap();
+        lowest = lowest.min(world.angle(bar).unwrap());
+    }
+    assert!(lowest >= -1.0 - one_degree, "it swung past the limit, to {}", lowest);
+    let angle = world.angle(bar).unwrap();
+    assert!(close(angle, -1.0, one_degree), "it rests at {}", angle);
+    assert!(world.spin(bar).unwrap().abs() < 0.01);
+    // a failed call changes nothing: the limit still holds
+    assert_eq!(world.set_joint_limit(hinge, true, 0.5, -0.5).unwrap_err().status, CAROM_ERR_BAD_ARGUMENT);
+    for _ in 0..60 {
+        world.step(1.0 / 60.0).unwrap();
+    }
+    assert!(close(world.angle(bar).unwrap(), -1.0, one_degree));
+    // switched off, the bar swings on down past the vertical
+    world.set_joint_limit(hinge, false, 0.0, 0.0).unwrap();
+    for _ in 0..60 {
+        world.step(1.0 / 60.0).unwrap();
+        lowest = lowest.min(world.angle(bar).unwrap());
+    }
+    assert!(lowest < -std::f64::consts::FRAC_PI_2, "lowest {}", lowest);
+}
+
+#[test]
+fn set_joint_spring_of_one_hertz_gives_a_period_of_one_second() {
+    // a rigid distance joint made an undamped 1 Hz spring: the bob bobs
+    // about its stretch with a period of 1 s, whatever its mass
+    let dt = 1.0 / 240.0;
+    let mut world = world_with_gravity(-G);
+    let mut def = dynamic_at(0.0, -1.0);
+    def.density = 3.0;
+    let bob = world.add_circle(&def, 0.1).unwrap();
+    let rod = world.add_joint(&JointDef::distance(CAROM_NULL_BODY, bob, (0.0, 0.0), (0.0, -1.0))).unwrap();
+    for _ in 0..30 {
+        world.step(dt).unwrap();
+    }
+    let (x, y) = world.position(bob).unwrap();
+    assert!(close(x, 0.0, 1e-9) && close(y, -1.0, 1e-9), "not rigid: ({}, {})", x, y);
+    world.set_joint_spring(rod, true, 1.0, 0.0).unwrap();
+    let (mut t, mut prev, mut ups) = (0.0, world.velocity(bob).unwrap().1, Vec::new());
+    for _ in 0..5 * 240 {
+        world.step(dt).unwrap();
+        t += dt;
+        let vy = world.velocity(bob).unwrap().1;
+        if prev < 0.0 && vy >= 0.0 {
+            ups.push(t - dt * vy / (vy - prev)); // the bottom of a bob
+        }
+        prev = vy;
+    }
+    assert!(ups.len() >= 4, "{:?}", ups);
+    let period = (ups[ups.len() - 1] - ups[0]) / (ups.len() - 1) as f64;
+    assert!(close(period, 1.0, 0.05), "period {}", period);
+    // switched off: rigid again at its length
+    world.set_joint_spring(rod, false, 1.0, 0.0).unwrap();
+    for _ in 0..240 {
+        world.step(dt).unwrap();
+    }
+    let (x, y) = world.position(bob).unwrap();
+    assert!(close((x * x + y * y).sqrt(), 1.0, 1e-3));
+}
+
+#[test]
+fn bad_limit_and_spring_return_the_status() {
+    type Call = Box<dyn Fn(&mut World, &[carom_joint_id; 5]) -> safe::Result<()>>;
+    // joints: hinge, rope, weld, motor, mouse
+    let cases: Vec<(&str, Call, carom_status)> = vec![
+        ("lower > upper", Box::new(|w, j| w.set_joint_limit(j[0], true, 1.0, -1.0)), CAROM_ERR_BAD_ARGUMENT),
+        ("huge limit", Box::new(|w, j| w.set_joint_limit(j[0], true, -1.0, 1e101)), CAROM_ERR_BAD_ARGUMENT),
+        ("nan limit", Box::new(|w, j| w.set_joint_limit(j[0], true, f64::NAN, 1.0)), CAROM_ERR_NOT_FINITE),
+        ("infinite limit", Box::new(|w, j| w.set_joint_limit(j[0], true, -1.0, f64::INFINITY)), CAROM_ERR_NOT_FINITE),
+        ("weld limit", Box::new(|w, j| w.set_joint_limit(j[2], true, -1.0, 1.0)), CAROM_ERR_BAD_ARGUMENT),
+        ("motor limit", Box::new(|w, j| w.set_joint_limit(j[3], true, -1.0, 1.0)), CAROM_ERR_BAD_ARGUMENT),
+        ("mouse limit", Box::new(|w, j| w.set_joint_limit(j[4], true, -1.0, 1.0)), CAROM_ERR_BAD_ARGUMENT),
+        ("negative hertz", Box::new(|w, j| w.set_joint_spring(j[1], true, -1.0, 0.5)), CAROM_ERR_BAD_ARGUMENT),
+        ("negative damping", Box::new(|w, j| w.set_joint_spring(j[1], true, 1.0, -0.5)), CAROM_ERR_BAD_ARGUMENT),
+        ("huge hertz", Box::new(|w, j| w.set_joint_spring(j[1], true, 1e101, 0.5)), CAROM_ERR_BAD_ARGUMENT),
+        ("nan hertz", Box::new(|w, j| w.set_joint_spring(j[1], true, f64::NAN, 0.5)), CAROM_ERR_NOT_FINITE),
+        ("motor spring", Box::new(|w, j| w.set_joint_spring(j[3], true, 1.0, 0.5)), CAROM_ERR_BAD_ARGUMENT),
+        ("mouse negative hertz", Box::new(|w, j| w.set_joint_spring(j[4], true, -1.0, 0.5)), CAROM_ERR_BAD_ARGUMENT),
+    ];
+    for (what, call, status) in cases {
+        let mut world = World::new().unwrap();
+        let ground = world.add_box(&static_at(0.0, 0.0), 10.0, 1.0).unwrap();
+        let cube = world.add_box(&dynamic_at(0.0, 2.0), 1.0, 1.0).unwrap();
+        let joints = [
+            world.add_joint(&JointDef::revolute(ground, cube, (0.0, 2.0))).unwrap(),
+            world.add_joint(&JointDef::distance(ground, cube, (0.0, 0.0), (0.0, 2.0))).unwrap(),
+            world.add_joint(&JointDef::weld(ground, cube, (0.0, 2.0))).unwrap(),
+            world.add_joint(&JointDef::new(CAROM_JOINT_MOTOR, ground, cube).max_force(1.0)).unwrap(),
+            world.add_joint(&JointDef::mouse(cube, (0.0, 2.0))).unwrap(),
+        ];
+        let err = call(&mut world, &joints).unwrap_err();
+        assert_eq!(err.status, status, "{}", what);
+        assert_eq!(err.message, safe::status_string(status), "{}", what);
+        assert_eq!(world.joints(), joints.to_vec(), "{}", what);
+    }
+    // and what is accepted
+    let mut world = World::new().unwrap();
+    let ground = world.add_box(&static_at(0.0, 0.0), 10.0, 1.0).unwrap();
+    let cube = world.add_box(&dynamic_at(0.0, 2.0), 1.0, 1.0).unwrap();
+    let hinge = world.add_joint(&JointDef::revolute(ground, cube, (0.0, 2.0))).unwrap();
+    world.set_joint_limit(hinge, true, 0.0, 0.0).unwrap(); // lower == upper: locked
+    world.set_joint_spring(hinge, true, 2.0, 1.0).unwrap(); // a torsion spring
+    let rail = world.add_joint(&JointDef::prismatic(CAROM_NULL_BODY, cube, (0.0, 2.0), (0.0, 1.0))).unwrap();
+    world.set_joint_limit(rail, true, -1.0, 1.0).unwrap();
+    let wheel = world.add_joint(&JointDef::wheel(CAROM_NULL_BODY, cube, (0.0, 2.0), (0.0, 1.0))).unwrap();
+    world.set_joint_spring(wheel, true, 4.0, 0.7).unwrap();
+    let weld = world.add_joint(&JointDef::weld(ground, cube, (0.0, 2.0))).unwrap();
+    world.set_joint_spring(weld, true, 5.0, 0.5).unwrap();
+    let mouse = world.add_joint(&JointDef::mouse(cube, (0.0, 2.0))).unwrap();
+    world.set_joint_spring(mouse, true, 0.0, 0.0).unwrap(); // the mouse joint's defaults
+    world.set_joint_spring(mouse, false, 10.0, 0.9).unwrap(); // enable is ignored for it
 }
