@@ -772,21 +772,20 @@ def _joint_type(value):
         return int(value)
 
 
-class Joint:
-    """A handle to one joint of a World (version 0.2): its id and its
-    world. The handle of a removed joint (removing one of its bodies
-    removes it too) raises CaromError(Status.STALE_JOINT); one whose world
-    was closed raises ClosedWorldError."""
+class _Handle:
+    """What a Body and a Joint share: an id (a non-zero 64-bit integer, the
+    library's carom_body_id or carom_joint_id) in one World; two handles are
+    equal when they name the same thing in the same world."""
 
     __slots__ = ("_world", "_id", "__weakref__")
 
-    def __init__(self, world, joint_id):
+    def __init__(self, world, handle_id):
         self._world = world
-        self._id = int(joint_id)
+        self._id = int(handle_id)
 
     @property
     def id(self):
-        """The carom_joint_id (a non-zero 64-bit integer)."""
+        """The library's id."""
         return self._id
 
     @property
@@ -794,10 +793,19 @@ class Joint:
         return self._world
 
     def __eq__(self, other):
-        return isinstance(other, Joint) and other._world is self._world and other._id == self._id
+        return type(other) is type(self) and other._world is self._world and other._id == self._id
 
     def __hash__(self):
-        return hash((id(self._world), self._id, "joint"))
+        return hash((id(self._world), self._id, type(self).__name__))
+
+
+class Joint(_Handle):
+    """A handle to one joint of a World (version 0.2): its id and its
+    world. The handle of a removed joint (removing one of its bodies
+    removes it too) raises CaromError(Status.STALE_JOINT); one whose world
+    was closed raises ClosedWorldError."""
+
+    __slots__ = ()
 
     @property
     def index(self):
@@ -910,31 +918,12 @@ class Joint:
                                            _finite(angle, "angle")), "set_target")
 
 
-class Body:
+class Body(_Handle):
     """A handle to one body of a World: its id and its world. The handle of
     a removed body raises CaromError(Status.STALE_BODY); one whose world was
     closed raises ClosedWorldError."""
 
-    __slots__ = ("_world", "_id", "__weakref__")
-
-    def __init__(self, world, body_id):
-        self._world = world
-        self._id = int(body_id)
-
-    @property
-    def id(self):
-        """The carom_body_id (a non-zero 64-bit integer)."""
-        return self._id
-
-    @property
-    def world(self):
-        return self._world
-
-    def __eq__(self, other):
-        return isinstance(other, Body) and other._world is self._world and other._id == self._id
-
-    def __hash__(self):
-        return hash((id(self._world), self._id))
+    __slots__ = ()
 
     @property
     def index(self):
