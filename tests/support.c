@@ -218,45 +218,5 @@ uint64_t world_state_hash (const carom_world *world)
       h = mix (h, &jt->reaction_torque, sizeof jt->reaction_torque);
     }
   h = mix (h, &world->joints.live, sizeof world->joints.live);
-  /* every live joint: its id, what it holds and the impulses it carries */
-  for (i = 0; i < world->joints.count; ++i)
-    {
-      const joint *jt = &world->joints.list[i];
-      carom_joint_id id;
-      if (!jt->alive)
-        continue;
-      id = joint_id_of (world, i);
-      h = mix (h, &id, sizeof id);
-      h = mix (h, &jt->type, sizeof jt->type);
-      h = mix (h, &jt->a, sizeof jt->a);
-      h = mix (h, &jt->b, sizeof jt->b);
-      h = mix (h, &jt->collide_connected, sizeof jt->collide_connected);
-      h = mix (h, &jt->local_a, sizeof jt->local_a);
-      h = mix (h, &jt->local_b, sizeof jt->local_b);
-      h = mix (h, &jt->local_axis, sizeof jt->local_axis);
-      h = mix (h, &jt->reference_angle, sizeof jt->reference_angle);
-      h = mix (h, &jt->length, sizeof jt->length);
-      h = mix (h, &jt->enable_limit, sizeof jt->enable_limit);
-      h = mix (h, &jt->enable_motor, sizeof jt->enable_motor);
-      h = mix (h, &jt->enable_spring, sizeof jt->enable_spring);
-      h = mix (h, &jt->lower, sizeof jt->lower);
-      h = mix (h, &jt->upper, sizeof jt->upper);
-      h = mix (h, &jt->motor_speed, sizeof jt->motor_speed);
-      h = mix (h, &jt->max_motor_force, sizeof jt->max_motor_force);
-      h = mix (h, &jt->max_motor_torque, sizeof jt->max_motor_torque);
-      h = mix (h, &jt->hertz, sizeof jt->hertz);
-      h = mix (h, &jt->damping_ratio, sizeof jt->damping_ratio);
-      h = mix (h, &jt->target, sizeof jt->target);
-      h = mix (h, &jt->target_angle, sizeof jt->target_angle);
-      h = mix (h, &jt->linear_impulse, sizeof jt->linear_impulse);
-      h = mix (h, &jt->angular_impulse, sizeof jt->angular_impulse);
-      h = mix (h, &jt->axial_impulse, sizeof jt->axial_impulse);
-      h = mix (h, &jt->motor_impulse, sizeof jt->motor_impulse);
-      h = mix (h, &jt->lower_impulse, sizeof jt->lower_impulse);
-      h = mix (h, &jt->upper_impulse, sizeof jt->upper_impulse);
-      h = mix (h, &jt->reaction_force, sizeof jt->reaction_force);
-      h = mix (h, &jt->reaction_torque, sizeof jt->reaction_torque);
-    }
-  h = mix (h, &world->joints.live, sizeof world->joints.live);
   return h;
 }

@@ -792,6 +792,11 @@ class _Handle:
     def world(self):
         return self._world
 
+    @property
+    def index(self):
+        """The id's slot (1-based) and generation: what the id is made of."""
+        return (self._id & 0xFFFFFFFF, self._id >> 32)
+
     def __eq__(self, other):
         return type(other) is type(self) and other._world is self._world and other._id == self._id
 
@@ -806,11 +811,6 @@ class Joint(_Handle):
     was closed raises ClosedWorldError."""
 
     __slots__ = ()
-
-    @property
-    def index(self):
-        """The id's slot (1-based) and generation: what the id is made of."""
-        return (self._id & 0xFFFFFFFF, self._id >> 32)
 
     def __repr__(self):
         if not self.is_alive:
@@ -924,11 +924,6 @@ class Body(_Handle):
     closed raises ClosedWorldError."""
 
     __slots__ = ()
-
-    @property
-    def index(self):
-        """The id's slot (1-based) and generation: what the id is made of."""
-        return (self._id & 0xFFFFFFFF, self._id >> 32)
 
     def __repr__(self):
         if not self.is_alive:
