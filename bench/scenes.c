@@ -364,7 +364,7 @@ int bench_parse (bench_options *o, int argc, char **argv)
   return 0;
 usage:
   fprintf (stderr, "usage: %s [scene=pyramid|rain|gas|chains] [bodies=N] [steps=N] [warmup=N] [substeps=N] "
-                   "[iterations=N] [mode=time|mem] [sleep=0|1]\n", argv[0]);
+                   "[iterations=N] [mode=time|mem|hash] [sleep=0|1]\n", argv[0]);
   return -1;
 }
 

@@ -102,7 +102,8 @@ double bench_body_inertia (const bench_body *b);
 /* Command line of every engine's bench, as key=value words:
  *   scene=pyramid|rain|gas|chains  bodies=N  steps=N (timed)  warmup=N (untimed,
  *   before the timed steps)  substeps=N iterations=N (0: engine default)
- *   mode=time|mem (mem: carom only, counts allocated bytes)
+ *   mode=time|mem|hash (mem: carom only, counts allocated bytes; hash: carom
+ *   only, a hash of the end state)
  *   sleep=0|1 (engines that can put resting bodies to sleep; default 0) */
 typedef struct bench_options {
   char scene[16];
