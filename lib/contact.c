@@ -31,25 +31,6 @@ static uint32_t pair_hash (int32_t a, int32_t b, int32_t pa, int32_t pb)
   return h;
 }
 
-/* Index of last step's contact between the same two pieces, or -1. */
-static int32_t find_old (const contacts *c, int32_t a, int32_t b, int32_t pa, int32_t pb)
-{
-  uint32_t mask, i;
-  if (c->old_count == 0)
-    return -1;
-  mask = (uint32_t) c->table_cap - 1;
-  for (i = pair_hash (a, b, pa, pb) & mask;; i = (i + 1) & mask)
-    {
-      int32_t k = c->table[i];
-      const contact *o;
-      if (k < 0)
-        return -1;
-      o = &c->old[k];
-      if (o->a == a && o->b == b && o->piece_a == pa && o->piece_b == pb)
-        return k;
-    }
-}
-
 static int build_table (carom_world *world)
 {
   contacts *c = &world->contacts;
@@ -76,7 +57,46 @@ static int build_table (carom_world *world)
         i = (i + 1) & mask;
       c->table[i] = k;
     }
+  c->table_built = 1;
   return 1;
+}
+
+/* Index of last step's contact between the same two pieces, or -1. The
+ * broad phase reports the pairs of a steady scene in the order it did last
+ * step, which is the order of last step's contacts: the one after the last
+ * match is tried first, and the hash over them is built only when that
+ * fails. */
+static int32_t find_old (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb)
+{
+  contacts *c = &world->contacts;
+  uint32_t mask, i;
+  const contact *o;
+  if (c->old_count == 0)
+    return -1;
+  if (c->cursor < c->old_count)
+    {
+      o = &c->old[c->cursor];
+      if (o->a == a && o->b == b && o->piece_a == pa && o->piece_b == pb)
+        return c->cursor++;
+    }
+  if (!c->table_built && !build_table (world))
+    {
+      c->out_of_memory = 1;
+      return -1;
+    }
+  mask = (uint32_t) c->table_cap - 1;
+  for (i = pair_hash (a, b, pa, pb) & mask;; i = (i + 1) & mask)
+    {
+      int32_t k = c->table[i];
+      if (k < 0)
+        return -1;
+      o = &c->old[k];
+      if (o->a == a && o->b == b && o->piece_a == pa && o->piece_b == pb)
+        {
+          c->cursor = k + 1;
+          return k;
+        }
+    }
 }
 
 typedef struct pair_context {
@@ -143,7 +163,8 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
   int32_t i, j;
   if (m->count == 0)
     return;
-  if (!mem_reserve (&world->allocator, (void **) &c->list, &c->cap, c->count + 1, sizeof (contact)))
+  if (c->count == c->cap
+      && !mem_reserve (&world->allocator, (void **) &c->list, &c->cap, c->count + 1, sizeof (contact)))
     {
       c->out_of_memory = 1;
       return;
@@ -159,11 +180,15 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
   for (i = 0; i < m->count; ++i)
     {
       contact_point *p = &k->points[i];
-      memset (p, 0, sizeof *p);
+      /* what the solver reads before it sets it (contact_prepare sets the
+       * rest) */
       p->point = m->points[i].point;
       p->normal = m->points[i].normal;
       p->depth = m->points[i].depth;
       p->feature = m->points[i].feature;
+      p->normal_impulse = p->tangent_impulse = 0.0;
+      p->normal_mass = p->tangent_mass = 0.0;
+      p->push_impulse = p->total_impulse = p->approach = 0.0;
       if (old < 0)
         continue;
       /* warm start: the same feature pair carries its impulses over */
@@ -243,7 +268,7 @@ static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, i
                          xform xa, xform xb, manifold *m, int can_reuse)
 {
   contacts *c = &world->contacts;
-  int32_t old = find_old (c, a, b, pa, pb);
+  int32_t old = find_old (world, a, b, pa, pb);
   const contact *from = NULL;
   if (can_reuse && old >= 0 && reuse_manifold (&c->old[old], xa, xb, pc->reuse_lin, pc->reuse_ang, m))
     from = &c->old[old];
@@ -472,7 +497,9 @@ carom_status contacts_update (carom_world *world, const step_context *ctx)
   c->point_count = 0;
   c->sensor_count = 0;
   c->out_of_memory = 0;
-  if (!build_table (world) || !broadphase_update (world, ctx, on_pair, (void *) ctx) || c->out_of_memory)
+  c->cursor = 0;
+  c->table_built = 0;
+  if (!broadphase_update (world, ctx, on_pair, (void *) ctx) || c->out_of_memory)
     {
       contacts_undo (world); /* the world is as it was */
       return CAROM_ERR_OUT_OF_MEMORY;

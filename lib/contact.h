@@ -64,10 +64,16 @@ typedef struct contacts {
   int32_t count, cap;
   contact *old;          /* last step's, for warm starting */
   int32_t old_count, old_cap;
-  int32_t *table;        /* open-addressing hash over `old` */
+  int32_t *table;        /* open-addressing hash over `old`, built when
+                            first needed in a detection (table_built) */
   int32_t table_cap;
+  int32_t table_built;
+  int32_t cursor;        /* the old contact after the last one matched */
   int32_t point_count;
   int32_t fine_count;    /* contacts marked fine this step */
+  const int32_t *rest;   /* this step's contacts the batches leave to the
+                            one-at-a-time passes (contact_batch_prepare) */
+  int32_t rest_count;
   int32_t *sensors;      /* this detection's pairs with a sensor: pairs of
                             slots, the sensor first (events.c tests their
                             overlap at the end of the update) */

@@ -164,6 +164,13 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
         }
     }
   world->batch_count = n;
+  /* the rest, in list order, for contact_solver.c's passes (in the room
+   * the colours took) */
+  c->rest = colour;
+  c->rest_count = 0;
+  for (i = 0; i < c->count; ++i)
+    if (!c->list[i].batched)
+      colour[c->rest_count++] = i;
 #ifdef BATCH_DEBUG
   { static int q; if (++q % 100 == 0) { int nb = 0, used_l = 0; for (i = 0; i < c->count; ++i) nb += c->list[i].batched; for (i = 0; i < n; ++i) for (k = 0; k < 4; ++k) used_l += world->batches[i].contact[k] >= 0; fprintf (stderr, "contacts %d batched %d batches %d lanes %d\n", c->count, nb, n, used_l);} }
 #endif

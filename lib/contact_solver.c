@@ -255,12 +255,10 @@ void contact_warm_start (carom_world *world, double remaining)
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
   int32_t i, j;
-  for (i = 0; i < c->count; ++i)
+  for (i = 0; i < c->rest_count; ++i)
     {
-      contact *k = &c->list[i];
+      contact *k = &c->list[c->rest[i]];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
-      if (k->batched)
-        continue;
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
@@ -418,12 +416,12 @@ double contact_solve (carom_world *world, const step_context *ctx, int32_t kicks
   solver_body *sb = world->solver_bodies;
   double most = 0.0;
   int32_t i, j;
-  for (i = 0; i < c->count; ++i)
+  for (i = 0; i < c->rest_count; ++i)
     {
-      contact *k = &c->list[i];
+      contact *k = &c->list[c->rest[i]];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
       double bias[MANIFOLD_MAX_POINTS], change = 0.0;
-      if (k->batched || (only_fine && !k->fine))
+      if (only_fine && !k->fine)
         continue;
       for (j = 0; j < k->count; ++j)
         bias[j] = point_bias (&k->points[j], a, b, ctx);
@@ -626,14 +624,12 @@ void contact_push_out (carom_world *world, const step_context *ctx, int first)
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
   int32_t i, j;
-  for (i = 0; i < c->count; ++i)
+  for (i = 0; i < c->rest_count; ++i)
     {
-      contact *k = &c->list[i];
+      contact *k = &c->list[c->rest[i]];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
       double bias[MANIFOLD_MAX_POINTS];
       int any = 0;
-      if (k->batched)
-        continue;
       for (j = 0; j < k->count; ++j)
         {
           if (first)
