@@ -63,11 +63,21 @@ static inline carom_body_id body_slot_id (const body *b, int32_t slot)
  * what an acceleration of magnitude `accel` (gravity) adds within h. Without
  * continuous collision (world off and not a bullet) contacts are looked for
  * no further ahead than 2% of the body's size. */
-static inline double body_reach (const body *b, double h, double accel, int continuous)
+static inline double body_reach_uncapped (const body *b, double h, double accel)
 {
-  double r = h * (v2_len (b->v) + fabs (b->w) * b->shape.bound_radius + (b->inv_mass > 0.0 ? accel * h : 0.0));
+  return h * (v2_len (b->v) + fabs (b->w) * b->shape.bound_radius + (b->inv_mass > 0.0 ? accel * h : 0.0));
+}
+
+/* body_reach from its uncapped value r. */
+static inline double body_reach_capped (const body *b, double r, int continuous)
+{
   double cap = 0.02 * b->shape.size;
   return continuous || b->bullet || r < cap ? r : cap;
+}
+
+static inline double body_reach (const body *b, double h, double accel, int continuous)
+{
+  return body_reach_capped (b, body_reach_uncapped (b, h, accel), continuous);
 }
 
 /* Whether two bodies' filters let them collide (carom_body_def). */

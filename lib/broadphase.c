@@ -20,15 +20,19 @@ void broadphase_destroy (carom_world *world)
   mem_free (&world->allocator, bp->cell_start, (size_t) bp->cell_cap * sizeof (int32_t));
   mem_free (&world->allocator, bp->cell_items, (size_t) bp->items_cap * sizeof (int32_t));
   mem_free (&world->allocator, bp->cell_fill, (size_t) bp->fill_cap * sizeof (int32_t));
+  mem_free (&world->allocator, bp->reach, (size_t) bp->reach_cap * sizeof (double));
   memset (bp, 0, sizeof *bp);
 }
 
 /* Boxes grow by the body's contact margin and by how far it can move in
  * this sub-step, so pairs that are apart but within the margin, or that will
  * meet before the next detection, are still reported. */
-static void fill_entry (sweep_entry *e, const body *b, int axis, double slop, const step_context *ctx)
+static void fill_entry (broadphase *bp, sweep_entry *e, const body *b, int axis, double slop,
+                        const step_context *ctx)
 {
-  double m = slop * b->shape.size + body_reach (b, ctx->dt, ctx->accel, ctx->continuous);
+  double r = body_reach_uncapped (b, ctx->dt, ctx->accel);
+  double m = slop * b->shape.size + body_reach_capped (b, r, ctx->continuous);
+  bp->reach[e->slot] = r;
   /* a sensor's box reaches as far as the fastest body can travel in the
    * update: what overlaps it at the end is among its pairs */
   if (b->sensor)
@@ -120,7 +124,7 @@ static int32_t fill_all (carom_world *world, const step_context *ctx)
     if (world->bodies[i].alive)
       {
         bp->entries[n].slot = i;
-        fill_entry (&bp->entries[n], &world->bodies[i], bp->axis, world->def.slop, ctx);
+        fill_entry (bp, &bp->entries[n], &world->bodies[i], bp->axis, world->def.slop, ctx);
         n++;
       }
   return n;
@@ -131,7 +135,8 @@ static int reserve_entries (carom_world *world)
   broadphase *bp = &world->broad;
   return mem_reserve (&world->allocator, (void **) &bp->entries, &bp->cap, world->live_count, sizeof (sweep_entry))
          && mem_reserve (&world->allocator, (void **) &bp->scratch, &bp->scratch_cap, world->live_count,
-                         sizeof (sweep_entry));
+                         sizeof (sweep_entry))
+         && mem_reserve (&world->allocator, (void **) &bp->reach, &bp->reach_cap, world->slot_count, sizeof (double));
 }
 
 int broadphase_sweep (carom_world *world, const step_context *ctx, pair_callback fn, void *user)
@@ -157,7 +162,7 @@ int broadphase_sweep (carom_world *world, const step_context *ctx, pair_callback
     {
       n = bp->count;
       for (i = 0; i < n; ++i)
-        fill_entry (&bp->entries[i], &world->bodies[bp->entries[i].slot], bp->axis, world->def.slop, ctx);
+        fill_entry (bp, &bp->entries[i], &world->bodies[bp->entries[i].slot], bp->axis, world->def.slop, ctx);
       if (!insertion_sort (bp->entries, n))
         merge_sort (bp->entries, bp->scratch, n);
     }

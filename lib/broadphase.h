@@ -31,6 +31,9 @@ typedef struct broadphase {
   int32_t count, cap, scratch_cap;
   int32_t *cell_start, *cell_items, *cell_fill; /* the grid's cells */
   int32_t cell_cap, items_cap, fill_cap;
+  double *reach;     /* per slot, this detection's body_reach_uncapped
+                        (the pairs' margins, contact.c) */
+  int32_t reach_cap;
   int axis;          /* 0: sweep along x, 1: along y */
   int dirty;         /* bodies were added or removed: rebuild */
 } broadphase;

@@ -422,8 +422,8 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
   pc.slop = world->def.slop * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   /* speculative margin: pairs that can close their gap within this step
    * are contacts now, so impacts are met before the bodies overlap */
-  pc.margin = pc.slop + body_reach (A, ctx->dt, ctx->accel, ctx->continuous || B->bullet)
-              + body_reach (B, ctx->dt, ctx->accel, ctx->continuous || A->bullet);
+  pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], ctx->continuous || B->bullet)
+              + body_reach_capped (B, world->broad.reach[b], ctx->continuous || A->bullet);
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   pc.pieces_a = pc.pieces_b = NULL;
