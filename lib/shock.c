@@ -10,7 +10,10 @@
  * still, so every body rests on what is below it whatever the masses
  * (Guendelman, Bridson and Fedkiw's shock propagation). The pass only
  * removes approach: it applies no impulse where the iterations already
- * succeeded. */
+ * succeeded. It holds only the contacts that carry a heavy body's weight
+ * onto a light one: those of such a pair and those from it down to the
+ * ground, whose lower bodies must stay still for it. Elsewhere in the same
+ * pile the iterations do as well on their own. */
 
 #include "contact_solver.h"
 
@@ -70,6 +73,41 @@ static int32_t order_by_level (carom_world *world, int32_t *order)
   return count;
 }
 
+/* Touching bodies differ in mass more than this: below it the iterations
+ * carry a stack's weight well, and holding lower bodies still only moves
+ * contacts around. */
+#define SHOCK_MASS_RATIO 10.0
+
+static int heavy_on_light_pair (const solver_body *a, const solver_body *b)
+{
+  return a->im > 0.0 && b->im > 0.0 && (a->im > SHOCK_MASS_RATIO * b->im || b->im > SHOCK_MASS_RATIO * a->im);
+}
+
+/* Which bodies the pass holds others on, in `mark`: both bodies of every
+ * heavy-on-light contact, then, going down the levels, every body such a
+ * body rests on. */
+static void mark_loaded (carom_world *world, const int32_t *order, int32_t count, int32_t *mark)
+{
+  const contacts *c = &world->contacts;
+  const solver_body *sb = world->solver_bodies;
+  const int32_t *level = world->solver_scratch;
+  int32_t i;
+  for (i = 0; i < world->slot_count; ++i)
+    mark[i] = 0;
+  for (i = 0; i < c->count; ++i)
+    if (heavy_on_light_pair (&sb[c->list[i].a], &sb[c->list[i].b]))
+      mark[c->list[i].a] = mark[c->list[i].b] = 1;
+  /* `order` goes up the levels, so backwards a body is marked before the
+   * contacts it rests on are reached */
+  for (i = count - 1; i >= 0; --i)
+    {
+      const contact *k = &c->list[order[i]];
+      int a_is_lower = level[k->a] < level[k->b];
+      if (mark[a_is_lower ? k->b : k->a])
+        mark[a_is_lower ? k->a : k->b] = 1;
+    }
+}
+
 /* What the pass reads of a contact it may hold, copied once per step in
  * level order (contact_shock_prepare), so the passes stream through it:
  * which body is the upper one, and its share of the point's effective mass
@@ -89,9 +127,10 @@ typedef struct shock_row {
 } shock_row;
 
 /* The rows of the contacts in `order` where the upper body rests on the
- * lower one: the normal from lower to upper within 60 degrees of straight
- * up. Returns how many. */
-static int32_t make_rows (carom_world *world, const step_context *ctx, const int32_t *order, int32_t count)
+ * lower one (the normal from lower to upper within 60 degrees of straight
+ * up) and the upper body is marked (mark_loaded). Returns how many. */
+static int32_t make_rows (carom_world *world, const step_context *ctx, const int32_t *order, int32_t count,
+                          const int32_t *mark)
 {
   vec2 up_dir = v2_neg (v2_normalize (ctx->gravity));
   const contacts *c = &world->contacts;
@@ -106,7 +145,7 @@ static int32_t make_rows (carom_world *world, const step_context *ctx, const int
       const solver_body *up = a_is_lower ? &sb[k->b] : &sb[k->a];
       double lift = v2_dot (k->points[0].normal, up_dir);
       shock_row *r = &rows[n];
-      if ((a_is_lower ? lift : -lift) < 0.5)
+      if ((a_is_lower ? lift : -lift) < 0.5 || !mark[a_is_lower ? k->b : k->a])
         continue;
       r->a = k->a, r->b = k->b;
       r->a_is_lower = a_is_lower;
@@ -202,20 +241,16 @@ void contact_shock_destroy (carom_world *world)
   world->shock_cap = 0;
 }
 
-/* Whether two touching dynamic bodies differ in mass more than tenfold:
- * below that the iterations handle stacks well, and holding lower bodies
- * still in a loose pile (rain) only moves contacts around. */
+/* Whether some two touching dynamic bodies differ in mass more than
+ * SHOCK_MASS_RATIO. */
 static int heavy_on_light (const carom_world *world)
 {
   const contacts *c = &world->contacts;
   const solver_body *sb = world->solver_bodies;
   int32_t i;
   for (i = 0; i < c->count; ++i)
-    {
-      double ia = sb[c->list[i].a].im, ib = sb[c->list[i].b].im;
-      if (ia > 0.0 && ib > 0.0 && (ia > 10.0 * ib || ib > 10.0 * ia))
-        return 1;
-    }
+    if (heavy_on_light_pair (&sb[c->list[i].a], &sb[c->list[i].b]))
+      return 1;
   return 0;
 }
 
@@ -225,9 +260,14 @@ static int heavy_on_light (const carom_world *world)
 void contact_shock_prepare (carom_world *world, const step_context *ctx)
 {
   int32_t *order = world->solver_scratch + 3 * world->slot_count + 1 + 2 * world->contacts.count;
+  int32_t *mark = order + world->contacts.count, count; /* solver_reserve leaves room for both */
   world->shock_count = 0;
   if ((ctx->gravity.x != 0.0 || ctx->gravity.y != 0.0) && heavy_on_light (world))
-    world->shock_count = make_rows (world, ctx, order, order_by_level (world, order));
+    {
+      count = order_by_level (world, order);
+      mark_loaded (world, order, count, mark);
+      world->shock_count = make_rows (world, ctx, order, count, mark);
+    }
 }
 
 /* 0.1% of the speed gravity adds in a sub-step: below that the iterations

@@ -116,6 +116,8 @@ static void finish (carom_world *world)
 
 int solver_reserve (carom_world *world)
 {
+  /* shock.c: levels, adjacency starts, queue and marks per body; adjacency
+   * (two per contact) and the level order per contact */
   int32_t need = 4 * world->slot_count + 1 + 3 * world->contacts.count;
   int32_t batches = world->contacts.count / BATCH_LANES + 2 * CONSTRAINT_COLOURS;
   return mem_reserve (&world->allocator, (void **) &world->solver_bodies, &world->solver_cap, world->slot_count + 1,

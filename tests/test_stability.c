@@ -136,6 +136,39 @@ static void test_mass_ratio_1000_both_ways (void **state)
     }
 }
 
+/* Case 4b: the heavy box (1000:1) on a column of three light ones. Shock
+ * propagation holds the heavy-on-light contact and every contact below it
+ * (shock.c): a column the heavy box's weight must pass through. Bound: over
+ * 10 s the heavy box never sinks more than a slop per contact beneath it
+ * (0.005 each, size 0.5 of a unit box), ends at rest (under 1e-3 per
+ * second), without sideways creep. */
+static void test_mass_ratio_1000_on_a_column (void **state)
+{
+  carom_world *w = world_with (0, -10, 0, 0.6);
+  carom_body_def d;
+  carom_body_id heavy = CAROM_NULL_BODY;
+  double x, y, vx, vy, sink = 0.0;
+  int i, step;
+  (void) state;
+  add_static_box (w, 0, -0.5, 20, 1);
+  for (i = 0; i < 4; ++i)
+    {
+      carom_body_def_init (&d, sizeof d);
+      d.y = 0.5 + i, d.density = i == 3 ? 1000.0 : 1.0;
+      assert_status (carom_world_add_box (w, &d, 1, 1, &heavy), CAROM_OK);
+    }
+  for (step = 0; step < 600; ++step)
+    {
+      carom_world_update (w, 1.0 / 60);
+      carom_body_get_position (w, heavy, &x, &y);
+      sink = 3.5 - y > sink ? 3.5 - y : sink;
+    }
+  carom_body_get_velocity (w, heavy, &vx, &vy);
+  assert_true (sink < 4 * 0.005);
+  assert_true (fabs (vx) < 1e-3 && fabs (vy) < 1e-3 && fabs (x) < 1e-6);
+  carom_world_destroy (w);
+}
+
 /* Fuzz finding F10: a box 1e122 times heavier than the one it lands on,
  * spinning, under the vertex-edge method. Bound: every state finite, and
  * the light box, squeezed out from under it, stays on the ground. */
@@ -629,6 +662,7 @@ int main (void)
     cmocka_unit_test (test_stack_of_10_top_moves_under_1pct),
     cmocka_unit_test (test_stack_scaled_1e_minus_3_and_1e3),
     cmocka_unit_test (test_mass_ratio_1000_both_ways),
+    cmocka_unit_test (test_mass_ratio_1000_on_a_column),
     cmocka_unit_test (test_stack_far_from_origin_1e6),
     cmocka_unit_test (test_extreme_mass_ratio_stays_finite),
     cmocka_unit_test (test_huge_friction_stays_finite),
