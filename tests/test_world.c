@@ -285,6 +285,16 @@ static void test_steady_steps_allocate_nothing (void **state)
       else
         assert_status (carom_world_add_circle (w, &d, 0.5, NULL), CAROM_OK);
     }
+  /* and a row of boxes on the ground 0.013 apart: near enough for the broad
+   * phase (each box's bounds grow by its slop, 0.005, and its reach in a
+   * step, 0.0028), too far for a contact (the pair's margin, 0.0106), so
+   * each step has pairs without a contact among those with one */
+  for (i = 0; i < 6; ++i)
+    {
+      carom_body_def_init (&d, sizeof d);
+      d.x = 10.0 + i * 1.013, d.y = 0.5;
+      assert_status (carom_world_add_box (w, &d, 1, 1, NULL), CAROM_OK);
+    }
   for (step = 0; step < 300; ++step)
     assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
   settled = c.calls;
