@@ -175,6 +175,7 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
   k->friction = pc->friction;
   k->slop = pc->slop;
   k->count = m->count;
+  k->fresh = old < 0;
   k->first_point = c->point_count;
   c->point_count += m->count;
   for (i = 0; i < m->count; ++i)

@@ -55,6 +55,10 @@ typedef struct contact {
                                  last computed by the narrow phase */
   int32_t reused;             /* this step's points are last step's, moved */
   int32_t batched;            /* solved in a batch this step (contact_batch.c) */
+  int32_t fresh;              /* last step had no contact of these pieces */
+  int32_t cold;               /* begins resting this step: fresh, near,
+                                 neither closing nor leaving fast
+                                 (contact_cold_start gives it an impulse) */
   int32_t count;
   contact_point points[MANIFOLD_MAX_POINTS];
 } contact;
@@ -71,6 +75,7 @@ typedef struct contacts {
   int32_t cursor;        /* the old contact after the last one matched */
   int32_t point_count;
   int32_t fine_count;    /* contacts marked fine this step */
+  int32_t cold_count;    /* contacts marked cold this step */
   const int32_t *rest;   /* this step's contacts the batches leave to the
                             one-at-a-time passes (contact_batch_prepare) */
   int32_t rest_count;

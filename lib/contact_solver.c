@@ -176,12 +176,32 @@ static void pair_matrix (contact *k, const solver_body *a, const solver_body *b)
              && k->k11 * k->k11 < BLOCK_MAX_CONDITION * (k->k11 * k->k22 - k->k12 * k->k12);
 }
 
+/* Whether a contact begins resting this step (contact_cold_start): it is
+ * new (no impulse to warm start from), and each of its points is near
+ * (within the slop) and neither closing nor leaving faster than gravity's
+ * threshold. (A contact that was there last step with no impulse carried
+ * no load, and starts from none.) */
+static int begins_resting (const contact *k, const step_context *ctx)
+{
+  int32_t j;
+  if (!k->fresh)
+    return 0;
+  for (j = 0; j < k->count; ++j)
+    {
+      const contact_point *p = &k->points[j];
+      if (p->normal_impulse != 0.0 || p->depth < -k->slop || !(fabs (p->approach) < ctx->restitution_threshold))
+        return 0;
+    }
+  return 1;
+}
+
 void contact_prepare (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
   int32_t i, j;
   c->fine_count = 0;
+  c->cold_count = 0;
   for (i = 0; i < c->count; ++i)
     {
       contact *k = &c->list[i];
@@ -221,6 +241,8 @@ void contact_prepare (carom_world *world, const step_context *ctx)
           p->tangent_total = p->tangent_moment = 0.0;
         }
       pair_matrix (k, a, b);
+      k->cold = begins_resting (k, ctx);
+      c->cold_count += k->cold;
     }
 }
 

@@ -45,6 +45,11 @@ int contact_shock_reserve (struct carom_world *world);
 void contact_shock_destroy (struct carom_world *world);
 void contact_shock (struct carom_world *world, const step_context *ctx);
 
+/* The cold start (shock.c): the contacts that begin resting this step
+ * (contact.cold) are given the weight they carry as their impulse to warm
+ * start from. Between contact_prepare and contact_batch_prepare. */
+void contact_cold_start (struct carom_world *world, const step_context *ctx);
+
 /* ------------------------------------------- shared by the contact passes */
 
 /* An impulse lambda along a direction d applied at the point: B gets

@@ -1,6 +1,7 @@
 /* The order of the stages in one update (sub-stepping after Catto's "soft
  * step"): the contacts are detected once, at the start (contact.c), and set
- * up once (contact_prepare); then each of `substeps` sub-steps
+ * up once (contact_prepare; those that begin resting start from the weight
+ * they carry, contact_cold_start); then each of `substeps` sub-steps
  *
  *   kicks the velocities with gravity and damping,
  *   applies the impulses the contacts carried so far (warm starting),
@@ -116,8 +117,9 @@ static void finish (carom_world *world)
 
 int solver_reserve (carom_world *world)
 {
-  /* shock.c: levels, adjacency starts, queue and marks per body; adjacency
-   * (two per contact) and the level order per contact */
+  /* shock.c: levels, adjacency starts, queue and marks (or the cold
+   * start's supports) per body; adjacency (two per contact) and the level
+   * order per contact */
   int32_t need = 4 * world->slot_count + 1 + 3 * world->contacts.count;
   int32_t batches = world->contacts.count / BATCH_LANES + 2 * CONSTRAINT_COLOURS;
   return mem_reserve (&world->allocator, (void **) &world->solver_bodies, &world->solver_cap, world->slot_count + 1,
@@ -130,6 +132,8 @@ int solver_reserve (carom_world *world)
                          2 * world->contacts.count + 2 * CONSTRAINT_COLOURS + 1, sizeof (int32_t))
          && mem_reserve (&world->allocator, (void **) &world->solver_scratch, &world->scratch_cap, need,
                          sizeof (int32_t))
+         && mem_reserve (&world->allocator, (void **) &world->cold_load, &world->cold_load_cap, world->slot_count,
+                         sizeof (double))
          && contact_shock_reserve (world) && joint_tree_reserve (world)
          && mem_reserve (&world->allocator, (void **) &world->restitution_list, &world->restitution_cap,
                          world->contacts.count, sizeof (int32_t));
@@ -139,6 +143,9 @@ void solver_destroy (carom_world *world)
 {
   mem_free (&world->allocator, world->solver_bodies, (size_t) world->solver_cap * sizeof (solver_body));
   mem_free (&world->allocator, world->solver_scratch, (size_t) world->scratch_cap * sizeof (int32_t));
+  mem_free (&world->allocator, world->cold_load, (size_t) world->cold_load_cap * sizeof (double));
+  world->cold_load = NULL;
+  world->cold_load_cap = 0;
   mem_free (&world->allocator, world->restitution_list, (size_t) world->restitution_cap * sizeof (int32_t));
   contact_shock_destroy (world);
   joint_tree_destroy (world);
@@ -165,7 +172,9 @@ void solver_step (carom_world *world, const step_context *ctx)
     joint_prepare (world, ctx);
   if (contacts)
     {
+      world->level_count = -1;
       contact_prepare (world, ctx);
+      contact_cold_start (world, ctx);
       contact_batch_prepare (world, ctx);
       contact_shock_prepare (world, ctx);
     }

@@ -26,8 +26,11 @@ struct carom_world {
   joint_tree joint_tree;               /* the joints' direct solve (joint_tree.c) */
   struct solver_body *solver_bodies; /* one per slot (solver.c) */
   int32_t solver_cap;
-  int32_t *solver_scratch;           /* shock propagation's levels and order */
+  int32_t *solver_scratch;           /* the levels and level order of shock.c */
   int32_t scratch_cap;
+  int32_t level_count;               /* contacts in that order this step, -1: not yet ordered */
+  double *cold_load;                 /* per slot: the cold start's load (shock.c) */
+  int32_t cold_load_cap;
   int32_t shock_count;               /* contacts it may hold this step */
   struct shock_row *shock_rows;      /* and what it reads of them (shock.c) */
   int32_t shock_cap;

@@ -103,6 +103,32 @@ static void test_stack_scaled_1e_minus_3_and_1e3 (void **state)
   run_stack_case (1e3, 0.0, 0.0);
 }
 
+/* Case 1b: a tower of 20 unit boxes built exactly touching, at the
+ * defaults. Its contacts begin resting with no impulse to warm start from,
+ * and support would reach its top only after 20 passes (2.5 steps), the
+ * top falling freely until then; the cold start (shock.c) gives each
+ * contact the weight it carries instead. Bound: over 10 s the top never
+ * sags or moves sideways by more than 1e-9 of the tower's height. */
+static void test_tower_built_at_rest_does_not_sag (void **state)
+{
+  carom_world *w = world_with (0, -10, 0, 0.6);
+  carom_body_id top = CAROM_NULL_BODY;
+  double x, y, worst = 0.0;
+  int i, step;
+  (void) state;
+  add_static_box (w, 0, -0.5, 20, 1);
+  for (i = 0; i < 20; ++i)
+    top = add_box (w, CAROM_DYNAMIC, 0.0, 0.5 + i, 0.0, 1.0, 1.0);
+  for (step = 0; step < 600; ++step)
+    {
+      carom_world_update (w, 1.0 / 60);
+      carom_body_get_position (w, top, &x, &y);
+      worst = fmax (worst, fmax (fabs (19.5 - y), fabs (x)));
+    }
+  assert_true (worst < 1e-9 * 20.0);
+  carom_world_destroy (w);
+}
+
 /* Case 4: mass ratio 1000:1 on the ground, the heavy box above and below.
  * Bound: after 10 s both rest (speeds under 1e-3 of a size per second),
  * where they were built within 2 slops, no sideways creep. */
@@ -661,6 +687,7 @@ int main (void)
   const struct CMUnitTest tests[] = {
     cmocka_unit_test (test_stack_of_10_top_moves_under_1pct),
     cmocka_unit_test (test_stack_scaled_1e_minus_3_and_1e3),
+    cmocka_unit_test (test_tower_built_at_rest_does_not_sag),
     cmocka_unit_test (test_mass_ratio_1000_both_ways),
     cmocka_unit_test (test_mass_ratio_1000_on_a_column),
     cmocka_unit_test (test_stack_far_from_origin_1e6),
