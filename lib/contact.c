@@ -17,6 +17,8 @@ void contacts_destroy (carom_world *world)
   contacts *c = &world->contacts;
   mem_free (&world->allocator, c->list, (size_t) c->cap * sizeof (contact));
   mem_free (&world->allocator, c->old, (size_t) c->old_cap * sizeof (contact));
+  mem_free (&world->allocator, c->pool, (size_t) c->pool_cap * sizeof (contact_point));
+  mem_free (&world->allocator, c->old_pool, (size_t) c->old_pool_cap * sizeof (contact_point));
   mem_free (&world->allocator, c->table, (size_t) c->table_cap * sizeof (int32_t));
   mem_free (&world->allocator, c->sensors, (size_t) c->sensor_cap * sizeof (int32_t));
   memset (c, 0, sizeof *c);
@@ -163,13 +165,19 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
   int32_t i, j;
   if (m->count == 0)
     return;
-  if (c->count == c->cap
-      && !mem_reserve (&world->allocator, (void **) &c->list, &c->cap, c->count + 1, sizeof (contact)))
+  if ((c->count == c->cap
+       && !mem_reserve (&world->allocator, (void **) &c->list, &c->cap, c->count + 1, sizeof (contact)))
+      || (c->point_count + m->count > c->pool_cap
+          && !mem_reserve (&world->allocator, (void **) &c->pool, &c->pool_cap, c->point_count + m->count,
+                           sizeof (contact_point))))
     {
       c->out_of_memory = 1;
       return;
     }
   k = &c->list[c->count++];
+  /* valid until the pool grows again: contacts_update points every
+   * contact at its points once the detection is done */
+  k->points = c->pool + c->point_count;
   k->a = a, k->b = b, k->piece_a = pa, k->piece_b = pb;
   k->restitution = pc->restitution;
   k->friction = pc->friction;
@@ -479,22 +487,37 @@ void contacts_undo (carom_world *world)
 {
   contacts *c = &world->contacts;
   contact *t = c->list;
-  int32_t tcap = c->cap, i, points = 0;
+  contact_point *tp = c->pool;
+  int32_t tcap = c->cap, tpcap = c->pool_cap, i, points = 0;
   c->list = c->old, c->count = c->old_count, c->cap = c->old_cap;
   c->old = t, c->old_cap = tcap, c->old_count = 0;
+  c->pool = c->old_pool, c->pool_cap = c->old_pool_cap;
+  c->old_pool = tp, c->old_pool_cap = tpcap;
   for (i = 0; i < c->count; ++i)
     points += c->list[i].count;
   c->point_count = points;
+}
+
+/* Point every contact of the list at its points in the pool (which may
+ * have moved as it grew during the detection). */
+static void point_contacts (contacts *c)
+{
+  int32_t i;
+  for (i = 0; i < c->count; ++i)
+    c->list[i].points = c->pool + c->list[i].first_point;
 }
 
 carom_status contacts_update (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
   contact *t = c->old;
-  int32_t tcap = c->old_cap;
+  contact_point *tp = c->old_pool;
+  int32_t tcap = c->old_cap, tpcap = c->old_pool_cap;
   /* last step's contacts become `old`; this step fills the other buffer */
   c->old = c->list, c->old_count = c->count, c->old_cap = c->cap;
   c->list = t, c->cap = tcap, c->count = 0;
+  c->old_pool = c->pool, c->old_pool_cap = c->pool_cap;
+  c->pool = tp, c->pool_cap = tpcap;
   c->point_count = 0;
   c->sensor_count = 0;
   c->out_of_memory = 0;
@@ -505,6 +528,7 @@ carom_status contacts_update (carom_world *world, const step_context *ctx)
       contacts_undo (world); /* the world is as it was */
       return CAROM_ERR_OUT_OF_MEMORY;
     }
+  point_contacts (c);
   return CAROM_OK;
 }
 
@@ -535,10 +559,15 @@ void contacts_forget_body (carom_world *world, int32_t slot)
         ++k;
       }
   c->sensor_count = k;
+  /* the points of those that stay move down with them */
   for (i = 0; i < c->count; ++i)
     {
-      c->list[i].first_point = points;
-      points += c->list[i].count;
+      contact *k = &c->list[i];
+      if (k->first_point != points)
+        memmove (c->pool + points, k->points, (size_t) k->count * sizeof (contact_point));
+      k->first_point = points;
+      k->points = c->pool + points;
+      points += k->count;
     }
   c->point_count = points;
 }

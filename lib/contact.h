@@ -60,7 +60,8 @@ typedef struct contact {
                                  neither closing nor leaving fast
                                  (contact_cold_start gives it an impulse) */
   int32_t count;
-  contact_point points[MANIFOLD_MAX_POINTS];
+  contact_point *points;      /* its `count` points: those of its list's pool
+                                 from first_point on */
 } contact;
 
 typedef struct contacts {
@@ -68,6 +69,12 @@ typedef struct contacts {
   int32_t count, cap;
   contact *old;          /* last step's, for warm starting */
   int32_t old_count, old_cap;
+  contact_point *pool;   /* the points of `list`, point_count of them, each
+                            contact's in a row (a manifold has 1 to
+                            MANIFOLD_MAX_POINTS: most have 1 or 2) */
+  int32_t pool_cap;
+  contact_point *old_pool; /* those of `old` */
+  int32_t old_pool_cap;
   int32_t *table;        /* open-addressing hash over `old`, built when
                             first needed in a detection (table_built) */
   int32_t table_cap;
