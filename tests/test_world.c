@@ -307,6 +307,69 @@ static void test_steady_steps_allocate_nothing (void **state)
   carom_world_destroy (w);
 }
 
+/* Removing a body drops its contacts and keeps the others as they were:
+ * boxes resting in a row on the ground (each with its own two points), the
+ * middle one removed; every remaining contact point reads as it did. */
+typedef struct seen_point {
+  carom_body_id a, b;
+  double px, py, nx, ny, depth;
+} seen_point;
+
+static int32_t read_contacts (const carom_world *w, seen_point *out, int32_t cap)
+{
+  int32_t i, n = carom_world_contact_count (w);
+  assert_true (n <= cap);
+  for (i = 0; i < n; ++i)
+    assert_status (carom_world_get_contact (w, i, &out[i].a, &out[i].b, &out[i].px, &out[i].py, &out[i].nx,
+                                            &out[i].ny, &out[i].depth),
+                   CAROM_OK);
+  return n;
+}
+
+static void test_removing_a_body_keeps_the_other_contacts (void **state)
+{
+  carom_world *w = NULL;
+  carom_body_def d;
+  carom_body_id ids[7];
+  seen_point before[64], after[64];
+  int32_t nb, na, i, j, kept = 0;
+  int step;
+  carom_world_def def;
+  (void) state;
+  carom_world_def_init (&def, sizeof def);
+  def.gravity_y = -10.0;
+  def.friction = 0.5;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  carom_body_def_init (&d, sizeof d);
+  d.type = CAROM_STATIC, d.y = -0.5;
+  assert_status (carom_world_add_box (w, &d, 40, 1, NULL), CAROM_OK);
+  for (i = 0; i < 7; ++i)
+    {
+      carom_body_def_init (&d, sizeof d);
+      d.x = -6.0 + 2.0 * i, d.y = 0.5, d.angle = 0.01 * i;
+      assert_status (carom_world_add_box (w, &d, 1, 1, &ids[i]), CAROM_OK);
+    }
+  for (step = 0; step < 30; ++step)
+    assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+  nb = read_contacts (w, before, 64);
+  assert_true (nb >= 14);
+  assert_status (carom_world_remove_body (w, ids[2]), CAROM_OK);
+  na = read_contacts (w, after, 64);
+  for (i = 0, j = 0; i < nb; ++i)
+    {
+      if (before[i].a == ids[2] || before[i].b == ids[2])
+        continue;
+      assert_true (j < na);
+      assert_true (after[j].a == before[i].a && after[j].b == before[i].b);
+      assert_true (after[j].px == before[i].px && after[j].py == before[i].py && after[j].nx == before[i].nx
+                   && after[j].ny == before[i].ny && after[j].depth == before[i].depth);
+      ++j, ++kept;
+    }
+  assert_int_equal (j, na);
+  assert_true (kept >= 12);
+  carom_world_destroy (w);
+}
+
 static void test_get_bodies (void **state)
 {
   carom_world *w = *state;
@@ -368,6 +431,7 @@ int main (void)
     cmocka_unit_test (test_two_worlds_are_independent),
     cmocka_unit_test (test_two_busy_worlds_interleaved_equal_alone),
     cmocka_unit_test (test_steady_steps_allocate_nothing),
+    cmocka_unit_test (test_removing_a_body_keeps_the_other_contacts),
     cmocka_unit_test_setup_teardown (test_get_bodies, world_setup, world_teardown),
   };
   return cmocka_run_group_tests_name ("world", tests, NULL, NULL);
