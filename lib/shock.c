@@ -73,6 +73,14 @@ static int32_t order_by_level (carom_world *world, int32_t *order)
   return count;
 }
 
+/* Whether the normal of a contact of `order` points up from its lower body
+ * to its upper one within 60 degrees: the upper one rests on it. */
+static int rests_on (const contact *k, const int32_t *level, vec2 up_dir)
+{
+  double lift = v2_dot (k->points[0].normal, up_dir);
+  return (level[k->a] < level[k->b] ? lift : -lift) >= 0.5;
+}
+
 /* Touching bodies differ in mass more than this: below it the iterations
  * carry a stack's weight well, and holding lower bodies still only moves
  * contacts around. */
@@ -143,9 +151,8 @@ static int32_t make_rows (carom_world *world, const step_context *ctx, const int
       const contact *k = &c->list[order[i]];
       int a_is_lower = level[k->a] < level[k->b];
       const solver_body *up = a_is_lower ? &sb[k->b] : &sb[k->a];
-      double lift = v2_dot (k->points[0].normal, up_dir);
       shock_row *r = &rows[n];
-      if ((a_is_lower ? lift : -lift) < 0.5 || !mark[a_is_lower ? k->b : k->a])
+      if (!rests_on (k, level, up_dir) || !mark[a_is_lower ? k->b : k->a])
         continue;
       r->a = k->a, r->b = k->b;
       r->a_is_lower = a_is_lower;
@@ -266,13 +273,6 @@ static int32_t levels (carom_world *world, int32_t **order)
   return world->level_count;
 }
 
-/* Whether the normal of a contact of `order` points up from its lower body
- * to its upper one within 60 degrees: the upper one rests on it. */
-static int rests_on (const contact *k, const int32_t *level, vec2 up_dir)
-{
-  double lift = v2_dot (k->points[0].normal, up_dir);
-  return (level[k->a] < level[k->b] ? lift : -lift) >= 0.5;
-}
 
 /* Shock propagation for the step, if it needs it. */
 void contact_shock_prepare (carom_world *world, const step_context *ctx)
