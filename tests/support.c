@@ -22,6 +22,18 @@ int world_setup (void **state)
   return 0;
 }
 
+carom_world *world_with (double gx, double gy, double restitution, double friction)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_world_def_init (&def, sizeof def);
+  def.gravity_x = gx, def.gravity_y = gy;
+  def.restitution = restitution;
+  def.friction = friction;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  return w;
+}
+
 int world_teardown (void **state)
 {
   carom_world_destroy (*state);

@@ -44,6 +44,10 @@ int near_rel (double a, double b, double tol);
 int world_setup (void **state);
 int world_teardown (void **state);
 
+/* A world at the library defaults but for gravity (gx, gy) and the world's
+ * restitution and friction; asserts that it was made. */
+carom_world *world_with (double gx, double gy, double restitution, double friction);
+
 /* Add a width x height box of the given type at (x, y), turned by angle;
  * asserts that it was added and returns its id. */
 carom_body_id add_box (carom_world *w, carom_body_type type, double x, double y, double angle, double width,

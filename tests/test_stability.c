@@ -5,18 +5,6 @@
 #include <math.h>
 #include <string.h>
 
-static carom_world *world_with (double gx, double gy, double restitution, double friction)
-{
-  carom_world *w = NULL;
-  carom_world_def def;
-  carom_world_def_init (&def, sizeof def);
-  def.gravity_x = gx, def.gravity_y = gy;
-  def.restitution = restitution;
-  def.friction = friction;
-  assert_status (carom_world_init (&w, &def), CAROM_OK);
-  return w;
-}
-
 static void add_static_box (carom_world *w, double x, double y, double wd, double ht)
 {
   carom_body_def d;

@@ -328,21 +328,14 @@ static int32_t read_contacts (const carom_world *w, seen_point *out, int32_t cap
 
 static void test_removing_a_body_keeps_the_other_contacts (void **state)
 {
-  carom_world *w = NULL;
+  carom_world *w = world_with (0.0, -10.0, 0.0, 0.5);
   carom_body_def d;
   carom_body_id ids[7];
   seen_point before[64], after[64];
   int32_t nb, na, i, j, kept = 0;
   int step;
-  carom_world_def def;
   (void) state;
-  carom_world_def_init (&def, sizeof def);
-  def.gravity_y = -10.0;
-  def.friction = 0.5;
-  assert_status (carom_world_init (&w, &def), CAROM_OK);
-  carom_body_def_init (&d, sizeof d);
-  d.type = CAROM_STATIC, d.y = -0.5;
-  assert_status (carom_world_add_box (w, &d, 40, 1, NULL), CAROM_OK);
+  add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 40.0, 1.0);
   for (i = 0; i < 7; ++i)
     {
       carom_body_def_init (&d, sizeof d);
