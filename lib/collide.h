@@ -28,6 +28,12 @@ int32_t collide_circles (vec2 ca, double ra, vec2 cb, double rb, double margin, 
 /* Convex polygon piece (body frame, placed by xa) against a circle. */
 int32_t collide_polygon_circle (const convex_piece *a, xform xa, vec2 cb, double rb, double margin, manifold *m);
 
+/* The largest separation of two convex pieces along their edge normals (the
+ * candidate axes of thesis fig. 3.7): negative when they overlap, 0 when
+ * they touch, and when apart never more than their distance. *of_b: 1 when
+ * the axis is an edge normal of b, 0 of a. */
+double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, int *of_b);
+
 /* Separating axis theorem with the minimum push vector (thesis 3.2.1): the
  * axis of least overlap among the edge normals of both pieces gives the
  * normal; the contact points, which SAT alone does not give, come from

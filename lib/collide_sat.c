@@ -36,6 +36,14 @@ static double max_separation (const convex_piece *p, xform xp, const convex_piec
   return best;
 }
 
+double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, int *of_b)
+{
+  int32_t edge;
+  double sa = max_separation (a, xa, b, xb, INFINITY, &edge), sb = max_separation (b, xb, a, xa, INFINITY, &edge);
+  *of_b = sb > sa;
+  return sa > sb ? sa : sb;
+}
+
 typedef struct clip_vertex {
   vec2 v;
   uint32_t id;

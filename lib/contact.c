@@ -271,6 +271,25 @@ static void collide_pieces (const convex_piece *p, xform xa, const convex_piece 
     }
 }
 
+/* The narrow phase for pieces pa, pb of bodies a, b placed at xa, xb (with a
+ * compound, pieces_a and pieces_b are the two bodies' body_pieces). */
+static void narrow_phase (const carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb,
+                          const convex_piece *pieces_a, const convex_piece *pieces_b, xform xa, xform xb, double margin,
+                          manifold *m)
+{
+  const shape *sa = &world->bodies[a].shape, *sb = &world->bodies[b].shape;
+  if (pieces_a)
+    collide_pieces (&pieces_a[pa], xa, &pieces_b[pb], xb, margin, m);
+  else if (pa < 0 && pb < 0 && sa->kind == CAROM_SHAPE_CIRCLE)
+    collide_circles (xa.p, sa->radius, xb.p, sb->radius, margin, m);
+  else if (pb < 0 && sb->kind == CAROM_SHAPE_CIRCLE)
+    collide_polygon_circle (&sa->pieces[pa], xa, xb.p, sb->radius, margin, m);
+  else if (pa < 0)
+    collide_polygons_vertex_edge (sa->vertices, sa->count, xa, sb->vertices, sb->count, xb, margin, m);
+  else
+    collide_polygons_sat (&sa->pieces[pa], xa, &sb->pieces[pb], xb, margin, m);
+}
+
 /* The narrow phase for one pair of pieces, or last step's points moved
  * (reuse_manifold), then the contact. */
 static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, const pair_context *pc,
@@ -281,20 +300,55 @@ static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, i
   const contact *from = NULL;
   if (can_reuse && old >= 0 && reuse_manifold (&c->old[old], xa, xb, pc->reuse_lin, pc->reuse_ang, m))
     from = &c->old[old];
-  else if (pc->pieces_a)
-    collide_pieces (&pc->pieces_a[pa], xa, &pc->pieces_b[pb], xb, pc->margin, m);
-  else if (pa < 0 && pb < 0 && world->bodies[a].shape.kind == CAROM_SHAPE_CIRCLE)
-    collide_circles (xa.p, world->bodies[a].shape.radius, xb.p, world->bodies[b].shape.radius, pc->margin, m);
-  else if (pb < 0 && world->bodies[b].shape.kind == CAROM_SHAPE_CIRCLE)
-    collide_polygon_circle (&world->bodies[a].shape.pieces[pa], xa, xb.p, world->bodies[b].shape.radius, pc->margin,
-                            m);
-  else if (pa < 0)
-    collide_polygons_vertex_edge (world->bodies[a].shape.vertices, world->bodies[a].shape.count, xa,
-                                  world->bodies[b].shape.vertices, world->bodies[b].shape.count, xb, pc->margin, m);
   else
-    collide_polygons_sat (&world->bodies[a].shape.pieces[pa], xa, &world->bodies[b].shape.pieces[pb], xb, pc->margin,
-                          m);
+    narrow_phase (world, a, b, pa, pb, pc->pieces_a, pc->pieces_b, xa, xb, pc->margin, m);
   add_manifold (world, a, b, pa, pb, m, pc, old, from, xa, xb);
+}
+
+void contact_collide_at (const carom_world *world, const contact *k, xform xa, xform xb, double margin, manifold *m)
+{
+  const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
+  convex_piece ca, cb;
+  const convex_piece *P = NULL, *Q = NULL;
+  if (A->shape.kind == CAROM_SHAPE_COMPOUND || B->shape.kind == CAROM_SHAPE_COMPOUND)
+    {
+      body_pieces (A, &P, &ca);
+      body_pieces (B, &Q, &cb);
+    }
+  narrow_phase (world, k->a, k->b, k->piece_a, k->piece_b, P, Q, xa, xb, margin, m);
+}
+
+double contact_separation_at (const carom_world *world, const contact *k, xform xa, xform xb, int *axis)
+{
+  const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
+  manifold m;
+  double deepest = -INFINITY;
+  int32_t j;
+  if (A->shape.kind == CAROM_SHAPE_POLYGON && B->shape.kind == CAROM_SHAPE_POLYGON && k->piece_a >= 0
+      && k->piece_b >= 0)
+    {
+      double s = polygons_separation (&A->shape.pieces[k->piece_a], xa, &B->shape.pieces[k->piece_b], xb, axis);
+      *axis = *axis ? CONTACT_AXIS_B : CONTACT_AXIS_A;
+      return s;
+    }
+  if (A->shape.kind == CAROM_SHAPE_COMPOUND || B->shape.kind == CAROM_SHAPE_COMPOUND)
+    {
+      convex_piece ca, cb;
+      const convex_piece *P, *Q;
+      body_pieces (A, &P, &ca);
+      body_pieces (B, &Q, &cb);
+      if (P[k->piece_a].count > 0 && Q[k->piece_b].count > 0)
+        {
+          double s = polygons_separation (&P[k->piece_a], xa, &Q[k->piece_b], xb, axis);
+          *axis = *axis ? CONTACT_AXIS_B : CONTACT_AXIS_A;
+          return s;
+        }
+    }
+  *axis = CONTACT_AXIS_NONE;
+  contact_collide_at (world, k, xa, xb, INFINITY, &m);
+  for (j = 0; j < m.count; ++j)
+    deepest = m.points[j].depth > deepest ? m.points[j].depth : deepest;
+  return -deepest;
 }
 
 static double material (double own, double fallback)

@@ -106,6 +106,17 @@ void contacts_undo (struct carom_world *world);
  * where they are now: the sensors' test (events.c). */
 struct body;
 int contact_bodies_overlap (const struct body *a, const struct body *b);
+/* The narrow phase of contact k's two pieces with its bodies placed at xa
+ * and xb instead of where they are (the time of impact, toi.c). */
+void contact_collide_at (const struct carom_world *world, const contact *k, xform xa, xform xb, double margin,
+                         manifold *m);
+/* The separation of contact k's two pieces placed at xa and xb: the largest
+ * over the edge normals for two polygons (polygons_separation), the
+ * distance less the radius with a circle. Never more than their distance;
+ * 0 when they touch. *axis: whose edge normal it is measured along (A's,
+ * B's, or NONE: the distance). */
+enum { CONTACT_AXIS_NONE = 0, CONTACT_AXIS_A = 1, CONTACT_AXIS_B = 2 };
+double contact_separation_at (const struct carom_world *world, const contact *k, xform xa, xform xb, int *axis);
 /* Forget every contact that involves `slot` (the body is being removed). */
 void contacts_forget_body (struct carom_world *world, int32_t slot);
 

@@ -28,6 +28,7 @@
  * from the bodies' motion since then, so no geometry is recomputed. */
 #include "contact_solver.h"
 
+#include "toi.h"
 #include "world.h"
 
 /* Overlap is pushed out at most this fraction of the smaller body's radius
@@ -195,6 +196,158 @@ static int begins_resting (const contact *k, const step_context *ctx)
   return 1;
 }
 
+/* A contact whose bodies fly free into an impact within the step: every
+ * point apart at detection, none resting (near and slow), and one closing
+ * faster than resting contact ever does and meeting within the step. Its
+ * pieces are polygons' convex pieces or circles (the time of impact follows
+ * their separation, contact_separation_at). */
+static int impact_within_step (const carom_world *world, const contact *k, const step_context *ctx)
+{
+  int32_t j, hits = 0;
+  if (k->piece_a < 0 && k->piece_b < 0 && world->bodies[k->a].shape.kind == CAROM_SHAPE_POLYGON)
+    return 0; /* the vertex-edge method's whole outlines */
+  for (j = 0; j < k->count; ++j)
+    {
+      const contact_point *p = &k->points[j];
+      if (!(p->depth < 0.0) || (p->depth >= -k->slop && !(fabs (p->approach) >= ctx->restitution_threshold)))
+        return 0;
+      hits |= p->approach < -ctx->restitution_threshold && p->toi >= 0.0 && p->toi < ctx->dt;
+    }
+  return hits;
+}
+
+/* The impulse side of a point of an impact at its time t: lever arms ra, rb
+ * of that moment (a circle's normal impulse through its centre), no impulse
+ * carried in, and the approach measured on them. */
+static void impact_arms (contact *k, contact_point *p, const body *ba, const body *bb, solver_body *a, solver_body *b,
+                         const step_context *ctx, double t, vec2 ra, vec2 rb)
+{
+  vec2 tangent = v2_perp (p->normal);
+  double vn;
+  p->rn_a = ba->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (ra, p->normal);
+  p->rn_b = bb->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (rb, p->normal);
+  p->rt_a = v2_cross (ra, tangent);
+  p->rt_b = v2_cross (rb, tangent);
+  p->normal_impulse = p->tangent_impulse = 0.0;
+  point_masses (p, a, b);
+  vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
+  p->toi = t;
+  constrain_bodies (k, p, a, b, vn, ctx);
+  p->approach = vn;
+}
+
+/* A point of an impact at its time of impact t, from the narrow phase's
+ * point q there (the bodies at xa, xb, turned by turn_a, turn_b since the
+ * step began): the normal, the point and the lever arms of eq. 3.23 are
+ * those of the touch. Its separation is still followed from the start of
+ * the step (contact_separation) through its two bodies' copies of it,
+ * carried back from the touch along their free flight; its depth is minus
+ * that separation at the start. An impulse there, at that time, with arms
+ * of that moment, keeps the pair's angular momentum about any point
+ * (contact_time_of_impact). */
+static void impact_point (contact *k, contact_point *p, const manifold_point *q, const body *ba, const body *bb,
+                          solver_body *a, solver_body *b, const step_context *ctx, double t, xform xa, xform xb,
+                          rot2 turn_a, rot2 turn_b)
+{
+  vec2 ra = v2_sub (q->point, xa.p), rb = v2_sub (q->point, xb.p);
+  vec2 ra0 = rot2_apply_inv (turn_a, ra), rb0 = rot2_apply_inv (turn_b, rb);
+  double s0 = -q->depth + v2_dot (v2_sub (v2_add (bb->p, rb0), v2_add (ba->p, ra0)), q->normal);
+  p->point = q->point;
+  p->normal = q->normal;
+  p->feature = q->feature;
+  p->depth = -s0;
+  p->ra = ra0;
+  p->rb = rb0;
+  p->adjusted = s0 - v2_dot (v2_sub (rb0, ra0), q->normal);
+  impact_arms (k, p, ba, bb, a, b, ctx, t, ra, rb);
+}
+
+/* A detected point of an impact that the touch has no point for: it keeps
+ * its normal and follows its separation from the detection, as any point,
+ * but its impulse, if any, is taken at the time of impact t too, at the
+ * midpoint of its two bodies' copies of it then, so the contact's every
+ * impulse is of one moment and keeps the pair's angular momentum. */
+static void impact_guard_point (contact *k, contact_point *p, const body *ba, const body *bb, solver_body *a,
+                                solver_body *b, const step_context *ctx, double t, xform xa, xform xb,
+                                rot2 turn_a, rot2 turn_b)
+{
+  vec2 ra0 = v2_sub (p->point, ba->p), rb0 = v2_sub (p->point, bb->p), ra, rb, mid;
+  mid = v2_scale (v2_add (v2_add (xa.p, rot2_apply (turn_a, ra0)), v2_add (xb.p, rot2_apply (turn_b, rb0))), 0.5);
+  ra = v2_sub (mid, xa.p);
+  rb = v2_sub (mid, xb.p);
+  p->ra = ra0;
+  p->rb = rb0;
+  p->adjusted = -p->depth - v2_dot (v2_sub (rb0, ra0), p->normal);
+  impact_arms (k, p, ba, bb, a, b, ctx, t, ra, rb);
+}
+
+/* An impact (impact_within_step) where its pieces first touch, each body in
+ * free flight until then (toi.c): the points of the touch (within the slop
+ * of it) take the place of the detected points of the same features, and
+ * the deepest, if no feature matches, that of the detected point meeting
+ * first. The other detected points stay (impact_guard_point): they guard
+ * the rest of the step (a body an impact sets spinning turns its other
+ * corners towards the surface). When the pieces do not touch within the
+ * step, the contact takes no impulse in it. */
+static void impact_points (carom_world *world, contact *k, const body *ba, const body *bb, solver_body *a,
+                           solver_body *b, const step_context *ctx)
+{
+  manifold m;
+  double t = toi_first_touch (world, k, a, b, ctx, ctx->dt);
+  xform xa, xb;
+  rot2 turn_a, turn_b;
+  uint32_t taken = 0u;
+  int32_t i, j;
+  if (t == TOI_APART)
+    {
+      /* their free flight does not touch within the step: a point closing
+       * fast, its lever arm turning, only seemed to (the passes take its
+       * normal speed at the arm of the detection) */
+      for (j = 0; j < k->count; ++j)
+        {
+          contact_point *p = &k->points[j];
+          p->rn_a = p->rn_b = p->rt_a = p->rt_b = 0.0;
+          p->normal_mass = p->tangent_mass = 0.0;
+          p->normal_impulse = p->tangent_impulse = 0.0;
+          p->toi = -1.0;
+        }
+      return;
+    }
+  if (t < 0.0)
+    return;
+  xa = toi_pose (world, k->a, a, ctx, t);
+  xb = toi_pose (world, k->b, b, ctx, t);
+  contact_collide_at (world, k, xa, xb, k->slop, &m);
+  for (i = 1; i < m.count; ++i) /* deepest first */
+    for (j = i; j > 0 && m.points[j].depth > m.points[j - 1].depth; --j)
+      {
+        manifold_point q = m.points[j];
+        m.points[j] = m.points[j - 1];
+        m.points[j - 1] = q;
+      }
+  turn_a = rot2_from_angle (a->w * t);
+  turn_b = rot2_from_angle (b->w * t);
+  for (i = 0; i < m.count; ++i)
+    {
+      int32_t at = -1;
+      for (j = 0; j < k->count; ++j)
+        if (!(taken & (1u << j)) && k->points[j].feature == m.points[i].feature)
+          at = j;
+      if (at < 0 && i == 0)
+        for (j = 0; j < k->count; ++j)
+          if (k->points[j].toi >= 0.0 && (at < 0 || k->points[j].toi < k->points[at].toi))
+            at = j;
+      if (at < 0)
+        continue;
+      taken |= 1u << at;
+      impact_point (k, &k->points[at], &m.points[i], ba, bb, a, b, ctx, t, xa, xb, turn_a, turn_b);
+    }
+  if (taken)
+    for (j = 0; j < k->count; ++j)
+      if (!(taken & (1u << j)))
+        impact_guard_point (k, &k->points[j], ba, bb, a, b, ctx, t, xa, xb, turn_a, turn_b);
+}
+
 void contact_prepare (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
@@ -240,6 +393,8 @@ void contact_prepare (carom_world *world, const step_context *ctx)
           p->total_impulse = p->normal_moment = 0.0;
           p->tangent_total = p->tangent_moment = 0.0;
         }
+      if (impact_within_step (world, k, ctx))
+        impact_points (world, k, ba, bb, a, b, ctx);
       pair_matrix (k, a, b);
       k->cold = begins_resting (k, ctx);
       c->cold_count += k->cold;

@@ -1,0 +1,30 @@
+/* Time of impact with rotation: when the two pieces of a contact first
+ * touch within the step, each body in free flight from where the step
+ * begins (its centre on the parabola of uniform gravity, its angle turning
+ * at its spin), and where each body is then. */
+#ifndef CAROM_TOI_H
+#define CAROM_TOI_H
+
+#include "contact.h"
+#include "solver.h"
+#include "step.h"
+
+struct carom_world;
+
+/* Where body slot `i` (solver body sb) is at time t into the step in free
+ * flight: p + v t + g t^2 / 2 (g: gravity, for a dynamic body) and its
+ * angle turned by w t. At t = 0, exactly its pose. */
+xform toi_pose (const struct carom_world *world, int32_t i, const solver_body *sb, const step_context *ctx, double t);
+
+/* The first time in (0, t_max] at which contact k's pieces touch in free
+ * flight (their separation, contact_separation_at, falls to 0); TOI_APART
+ * when they stay apart until t_max; TOI_UNKNOWN when they already touch at
+ * 0, or the advancement ran out of trials. Conservative advancement keeps
+ * every trial at or before the first touch; once a trial overlaps, the
+ * touch is bracketed and found by regula falsi. */
+#define TOI_APART (-1.0)
+#define TOI_UNKNOWN (-2.0)
+double toi_first_touch (const struct carom_world *world, const contact *k, const solver_body *a,
+                        const solver_body *b, const step_context *ctx, double t_max);
+
+#endif
