@@ -73,6 +73,16 @@ static void point_masses (contact_point *p, const solver_body *a, const solver_b
     p->rt_a = p->rt_b = p->tangent_impulse = 0.0;
 }
 
+/* The arm from a body's centre to its copy of a contact point, whose motion
+ * the separation follows (contact_separation). A circle's copy is where its
+ * surface meets the normal, which does not turn with the circle: its centre
+ * stands for it (arm 0), or a spinning ball on the ground would seem to
+ * rise off it as its bottom point turned away, and sink. */
+static vec2 separation_arm (const body *b, vec2 r)
+{
+  return b->shape.kind == CAROM_SHAPE_CIRCLE ? v2 (0.0, 0.0) : r;
+}
+
 /* Lever arms of a contact point. A lever arm cannot be longer than the body
  * reaches (rounding of far-apart coordinates can make it so for a tiny
  * body); a circle's normal impulse passes through its centre, so r x n is
@@ -85,13 +95,13 @@ static void lever_arms (contact_point *p, const body *ba, const body *bb, vec2 r
     ra = v2_scale (ra, la / v2_len (ra));
   if (v2_len2 (rb) > lb * lb)
     rb = v2_scale (rb, lb / v2_len (rb));
-  p->ra = ra;
-  p->rb = rb;
   p->rn_a = ba->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (ra, p->normal);
   p->rn_b = bb->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (rb, p->normal);
   p->rt_a = v2_cross (ra, t);
   p->rt_b = v2_cross (rb, t);
-  p->adjusted = -p->depth - v2_dot (v2_sub (rb, ra), p->normal);
+  p->ra = separation_arm (ba, ra);
+  p->rb = separation_arm (bb, rb);
+  p->adjusted = -p->depth - v2_dot (v2_sub (p->rb, p->ra), p->normal);
 }
 
 /* A point still apart and closing meets the other body a time t = gap /
@@ -250,8 +260,11 @@ static void impact_point (contact *k, contact_point *p, const manifold_point *q,
                           rot2 turn_a, rot2 turn_b)
 {
   vec2 ra = v2_sub (q->point, xa.p), rb = v2_sub (q->point, xb.p);
-  vec2 ra0 = rot2_apply_inv (turn_a, ra), rb0 = rot2_apply_inv (turn_b, rb);
-  double s0 = -q->depth + v2_dot (v2_sub (v2_add (bb->p, rb0), v2_add (ba->p, ra0)), q->normal);
+  vec2 ra0 = separation_arm (ba, rot2_apply_inv (turn_a, ra)), rb0 = separation_arm (bb, rot2_apply_inv (turn_b, rb));
+  /* how far each copy moved from the start to the touch */
+  vec2 moved_a = v2_sub (v2_add (xa.p, rot2_apply (turn_a, ra0)), v2_add (ba->p, ra0));
+  vec2 moved_b = v2_sub (v2_add (xb.p, rot2_apply (turn_b, rb0)), v2_add (bb->p, rb0));
+  double s0 = -q->depth - v2_dot (v2_sub (moved_b, moved_a), q->normal);
   p->point = q->point;
   p->normal = q->normal;
   p->feature = q->feature;
@@ -275,9 +288,9 @@ static void impact_guard_point (contact *k, contact_point *p, const body *ba, co
   mid = v2_scale (v2_add (v2_add (xa.p, rot2_apply (turn_a, ra0)), v2_add (xb.p, rot2_apply (turn_b, rb0))), 0.5);
   ra = v2_sub (mid, xa.p);
   rb = v2_sub (mid, xb.p);
-  p->ra = ra0;
-  p->rb = rb0;
-  p->adjusted = -p->depth - v2_dot (v2_sub (rb0, ra0), p->normal);
+  p->ra = separation_arm (ba, ra0);
+  p->rb = separation_arm (bb, rb0);
+  p->adjusted = -p->depth - v2_dot (v2_sub (p->rb, p->ra), p->normal);
   impact_arms (k, p, ba, bb, a, b, ctx, t, ra, rb);
 }
 

@@ -340,6 +340,46 @@ static void test_friction_mixing_is_the_geometric_mean (void **state)
     }
 }
 
+/* A ball rolling on a static floor (friction 0.6, spin -v/r, at 1, 5 and
+ * 20 m/s), and one spinning in place that friction sets rolling, stay on
+ * the floor: for 2 s their height is the radius less at most the slop and
+ * their vertical speed is 0 to 1e-9 of their speed; the rolling ones keep
+ * their speed to 1e-9. */
+static void test_rolling_ball_stays_on_the_floor (void **state)
+{
+  static const double speeds[] = { 1.0, 5.0, 20.0, 0.0 };
+  const double r = 0.1;
+  int i, step;
+  (void) state;
+  for (i = 0; i < 4; ++i)
+    {
+      carom_world *w = NULL;
+      carom_world_def def;
+      carom_body_def d;
+      carom_body_id ball;
+      double v = speeds[i], scale = v > 0.0 ? v : 5.0 * r;
+      carom_world_def_init (&def, sizeof def);
+      def.gravity_y = -9.81;
+      def.friction = 0.6;
+      assert_status (carom_world_init (&w, &def), CAROM_OK);
+      add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 200.0, 1.0);
+      carom_body_def_init (&d, sizeof d);
+      d.x = -50.0, d.y = r, d.vx = v, d.spin = v > 0.0 ? -v / r : 50.0;
+      assert_status (carom_world_add_circle (w, &d, r, &ball), CAROM_OK);
+      for (step = 0; step < 120; ++step)
+        {
+          double y, vx, vy;
+          assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
+          carom_body_get_position (w, ball, NULL, &y);
+          carom_body_get_velocity (w, ball, &vx, &vy);
+          if (!(y >= r - 0.01 * r - 1e-12 && y <= r + 1e-12) || !(fabs (vy) <= 1e-9 * scale)
+              || (v > 0.0 && !(fabs (vx - v) <= 1e-9 * v)))
+            fail_msg ("speed %g, step %d: height %.12g (radius %g), velocity (%.12g, %.3g)", v, step, y, r, vx, vy);
+        }
+      carom_world_destroy (w);
+    }
+}
+
 /* A box dropped flat on a static floor comes to rest on it, without
  * jitter, sinking no more than the slop. */
 static void test_box_rests_on_floor (void **state)
@@ -431,6 +471,7 @@ int main (void)
     cmocka_unit_test (test_restitution_scales_separation_speed),
     cmocka_unit_test (test_restitution_mixing_takes_the_larger),
     cmocka_unit_test (test_friction_mixing_is_the_geometric_mean),
+    cmocka_unit_test (test_rolling_ball_stays_on_the_floor),
     cmocka_unit_test (test_box_rests_on_floor),
     cmocka_unit_test (test_u_shape_catches_box_in_notch),
   };
