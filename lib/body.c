@@ -170,6 +170,7 @@ carom_body_id body_commit (carom_world *world, const carom_body_def *def, const 
   world->sensor_count += b->sensor;
   world->live_count++;
   world->broad.dirty = 1;
+  world->seams_dirty |= b->type == CAROM_STATIC;
   return body_id_of (world, slot);
 }
 
@@ -186,6 +187,7 @@ carom_status carom_world_remove_body (carom_world *world, carom_body_id id)
   contacts_forget_body (world, slot); /* also wakes the bodies it touched */
   joints_forget_body (world, slot);   /* and those it was joined to */
   shape_destroy (&b->shape, &world->allocator);
+  world->seams_dirty |= b->type == CAROM_STATIC;
   world->sensor_count -= b->sensor;
   b->alive = 0;
   b->generation = b->generation == UINT32_MAX ? 1 : b->generation + 1;

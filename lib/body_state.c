@@ -35,6 +35,7 @@ carom_status carom_body_set_position (carom_world *world, carom_body_id id, doub
   b->p = v2 (x, y);
   body_wake (b);
   body_sync (b);
+  world->seams_dirty |= b->type == CAROM_STATIC;
   return CAROM_OK;
 }
 
@@ -58,6 +59,7 @@ carom_status carom_body_set_angle (carom_world *world, carom_body_id id, double 
   b->angle = angle;
   body_wake (b);
   body_sync (b);
+  world->seams_dirty |= b->type == CAROM_STATIC;
   return CAROM_OK;
 }
 

@@ -29,20 +29,22 @@ int32_t collide_circles (vec2 ca, double ra, vec2 cb, double rb, double margin, 
 int32_t collide_polygon_circle (const convex_piece *a, xform xa, vec2 cb, double rb, double margin, manifold *m)
 {
   vec2 c = xform_apply_inv (xa, cb); /* circle centre in the polygon's frame */
-  double best = -INFINITY, depth;
-  int32_t i, edge = 0, n = a->count;
+  double best = -INFINITY, apart = -INFINITY, depth;
+  int32_t i, edge = -1, n = a->count;
   vec2 v1, v2_, normal, surface;
   m->count = 0;
   for (i = 0; i < n; ++i)
     {
       double s = v2_dot (a->normals[i], v2_sub (c, a->vertices[i]));
-      if (s > best)
+      apart = s > apart ? s : apart;
+      /* the face it is met on: none of a seam (seams.h) */
+      if (s > best && !piece_edge_internal (a, i))
         {
           best = s;
           edge = i;
         }
     }
-  if (best > rb + margin)
+  if (apart > rb + margin || edge < 0)
     return 0;
   v1 = a->vertices[edge];
   v2_ = a->vertices[(edge + 1) % n];
@@ -53,7 +55,9 @@ int32_t collide_polygon_circle (const convex_piece *a, xform xa, vec2 cb, double
       double u1 = v2_dot (v2_sub (c, v1), v2_sub (v2_, v1));
       double u2 = v2_dot (v2_sub (c, v2_), v2_sub (v1, v2_));
       vec2 corner = u1 <= 0.0 ? v1 : v2_;
-      if (u1 <= 0.0 || u2 <= 0.0)
+      /* a corner next to a seam is no corner: the face goes on across it */
+      int seam = u1 <= 0.0 ? piece_edge_internal (a, (edge + n - 1) % n) : piece_edge_internal (a, (edge + 1) % n);
+      if ((u1 <= 0.0 || u2 <= 0.0) && !seam)
         {
           vec2 d = v2_sub (c, corner);
           double dist = hypot (d.x, d.y);

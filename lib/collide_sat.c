@@ -7,12 +7,14 @@
  * along an axis is the gap between p's edge and q's nearest vertex; the
  * largest over the axes is minus the length of the minimum push vector. */
 static double max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double margin,
-                              int32_t *edge)
+                              int32_t *edge, double *outer, int32_t *outer_edge)
 {
   xform rel = xform_relative (xq, xp); /* p in q's frame */
   double best = -INFINITY;
   int32_t i, j;
   *edge = 0;
+  *outer = -INFINITY;
+  *outer_edge = -1;
   for (i = 0; i < p->count; ++i)
     {
       vec2 n = rot2_apply (rel.q, p->normals[i]);
@@ -25,6 +27,11 @@ static double max_separation (const convex_piece *p, xform xp, const convex_piec
             s = d;
         }
       s -= offset;
+      if (s > *outer && !piece_edge_internal (p, i))
+        {
+          *outer = s;
+          *outer_edge = i;
+        }
       if (s > best)
         {
           best = s;
@@ -38,8 +45,9 @@ static double max_separation (const convex_piece *p, xform xp, const convex_piec
 
 double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, int *of_b)
 {
-  int32_t edge;
-  double sa = max_separation (a, xa, b, xb, INFINITY, &edge), sb = max_separation (b, xb, a, xa, INFINITY, &edge);
+  int32_t edge, outer_edge;
+  double outer, sa = max_separation (a, xa, b, xb, INFINITY, &edge, &outer, &outer_edge);
+  double sb = max_separation (b, xb, a, xa, INFINITY, &edge, &outer, &outer_edge);
   *of_b = sb > sa;
   return sa > sb ? sa : sb;
 }
@@ -76,41 +84,53 @@ static int clip_segment (clip_vertex out[2], const clip_vertex in[2], vec2 n, do
 
 int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin, manifold *m)
 {
-  int32_t edge_a, edge_b, ref_edge, inc_edge = 0, i, n_inc, flip;
+  int32_t edge_a, edge_b, outer_a, outer_b, ref_edge, inc_edge = 0, i, n_inc, flip, tries;
   const convex_piece *ref, *inc;
   xform xref, xinc;
-  double sep_a, sep_b, best = INFINITY, tol = 0.1 * margin, side_tol;
+  double sep_a, sep_b, face_a, face_b, best = INFINITY, tol = 0.1 * margin, side_tol;
   vec2 n_ref, v1, v2_, tangent;
   clip_vertex seg[2], clip1[2], clip2[2];
   m->count = 0;
-  sep_a = max_separation (a, xa, b, xb, margin, &edge_a);
+  sep_a = max_separation (a, xa, b, xb, margin, &edge_a, &face_a, &outer_a);
   if (sep_a > margin)
     return 0;
-  sep_b = max_separation (b, xb, a, xa, margin, &edge_b);
+  sep_b = max_separation (b, xb, a, xa, margin, &edge_b, &face_b, &outer_b);
   if (sep_b > margin)
+    return 0;
+  /* the faces a contact may take: none of a seam (seams.h), though the
+   * separation test above counts every axis */
+  if (outer_a < 0 && outer_b < 0)
     return 0;
   /* prefer A's face unless B's is clearly better, so the choice does not
    * flicker between steps for nearly equal candidates */
-  if (sep_b > sep_a + tol)
+  flip = outer_a < 0 || (outer_b >= 0 && face_b > face_a + tol);
+  for (tries = 0;; ++tries)
     {
-      ref = b, xref = xb, inc = a, xinc = xa, ref_edge = edge_b, flip = 1;
-    }
-  else
-    {
-      ref = a, xref = xa, inc = b, xinc = xb, ref_edge = edge_a, flip = 0;
-    }
-  n_ref = rot2_apply (xref.q, ref->normals[ref_edge]);
-  /* incident edge: the one on the other piece facing the reference normal
-   * most directly */
-  n_inc = inc->count;
-  for (i = 0; i < n_inc; ++i)
-    {
-      double d = v2_dot (n_ref, rot2_apply (xinc.q, inc->normals[i]));
-      if (d < best)
+      if (flip)
+        ref = b, xref = xb, inc = a, xinc = xa, ref_edge = outer_b;
+      else
+        ref = a, xref = xa, inc = b, xinc = xb, ref_edge = outer_a;
+      n_ref = rot2_apply (xref.q, ref->normals[ref_edge]);
+      /* incident edge: the one on the other piece facing the reference
+       * normal most directly */
+      n_inc = inc->count;
+      best = INFINITY;
+      for (i = 0; i < n_inc; ++i)
         {
-          best = d;
-          inc_edge = i;
+          double d = v2_dot (n_ref, rot2_apply (xinc.q, inc->normals[i]));
+          if (d < best)
+            {
+              best = d;
+              inc_edge = i;
+            }
         }
+      /* nor the incident one: a face against a seam is met on the other
+       * piece's own face, the surface the seam continues */
+      if (!piece_edge_internal (inc, inc_edge))
+        break;
+      if (tries == 1 || (flip ? outer_a : outer_b) < 0)
+        return 0;
+      flip = !flip;
     }
   seg[0].v = xform_apply (xinc, inc->vertices[inc_edge]);
   seg[0].id = (uint32_t) inc_edge;

@@ -4,6 +4,7 @@
 
 #include <string.h>
 
+#include "seams.h"
 #include "step.h"
 #include "world.h"
 
@@ -577,6 +578,8 @@ carom_status contacts_update (carom_world *world, const step_context *ctx)
   c->out_of_memory = 0;
   c->cursor = 0;
   c->table_built = 0;
+  if (world->seams_dirty)
+    seams_update (world);
   if (!broadphase_update (world, ctx, on_pair, (void *) ctx) || c->out_of_memory)
     {
       contacts_undo (world); /* the world is as it was */

@@ -21,7 +21,15 @@ typedef struct convex_piece {
   int32_t alloc_count; /* vertices allocated (count may be less) */
   double radius;       /* a circle piece's radius (count 0), else 0 */
   double restitution, friction; /* its part's material; < 0: the body's */
+  uint64_t internal;   /* bit i: edge i is internal, shared with another
+                          static piece (seams.c); 0 for moving bodies */
 } convex_piece;
+
+/* Whether edge i of a piece is internal (a seam, seams.h). */
+static inline int piece_edge_internal (const convex_piece *p, int32_t i)
+{
+  return i < 64 && ((p->internal >> i) & 1u);
+}
 
 struct shape_part;
 

@@ -55,6 +55,8 @@ struct carom_world {
   int continuous;      /* speculative contacts as far as bodies can travel (off by default) */
   int forces_active;   /* some body has a force or torque for the next update (force.c) */
   int32_t sensor_count; /* live sensor bodies */
+  int seams_dirty;     /* static bodies changed: their internal edges are
+                          marked again before the next detection (seams.c) */
   events events;       /* the last update's touching pairs and events (events.c) */
 };
 
