@@ -32,6 +32,14 @@ typedef struct contact_point {
                                              restitution's) */
   double normal_moment, tangent_moment;   /* sum of impulse x time left in
                                              the step when applied */
+  int32_t in_impact;                      /* takes part in its contact's
+                                             impact (contact_impacts): near
+                                             at detection, meeting within
+                                             the step, or of the touch
+                                             (not a guard, contact_solver.c) */
+  double impact_moment;                   /* sum of the impacts' impulses x
+                                             their time into the step
+                                             (contact_impacts) */
   double toi;                             /* apart and closing at detection:
                                              when it meets, else -1 */
   /* where the point was last computed, in body a's frame: a's and b's
@@ -56,6 +64,9 @@ typedef struct contact {
   int32_t reused;             /* this step's points are last step's, moved */
   int32_t batched;            /* solved in a batch this step (contact_batch.c) */
   int32_t fresh;              /* last step had no contact of these pieces */
+  int32_t queued;             /* waiting in contact_impacts' work list */
+  double impact_at;           /* when its impact happens in the step (a seed
+                                 of contact_impacts) */
   int32_t cold;               /* begins resting this step: fresh, near,
                                  neither closing nor leaving fast
                                  (contact_cold_start gives it an impulse) */
@@ -83,6 +94,8 @@ typedef struct contacts {
   int32_t point_count;
   int32_t fine_count;    /* contacts marked fine this step */
   int32_t cold_count;    /* contacts marked cold this step */
+  int32_t bouncy_count;  /* contacts with restitution this step (contact_prepare) */
+  int32_t impacts;       /* impacts contact_impacts made this step */
   const int32_t *rest;   /* this step's contacts the batches leave to the
                             one-at-a-time passes (contact_batch_prepare) */
   int32_t rest_count;

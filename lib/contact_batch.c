@@ -95,7 +95,7 @@ static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t ind
           q->normal_impulse[lane] = q->tangent_impulse[lane] = 0.0;
         }
       q->push_impulse[lane] = 0.0;
-      q->total[lane] = 0.0;
+      q->total[lane] = j < n ? k->points[j].total_impulse : 0.0; /* an impact's (contact_impacts) */
     }
 }
 

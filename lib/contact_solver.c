@@ -51,6 +51,13 @@
 #define RESTITUTION_TOLERANCE 1e-10
 #define RESTITUTION_MAX_ITERATIONS 100
 
+/* An impact passed on through touching bodies (contact_impacts) makes at
+ * most this many pairwise impacts per contact of the step: with e < 1 a
+ * row rings on ever more softly, and the rest is left to the sub-steps. */
+#define IMPACT_MAX_EVENTS 64
+/* contact_point.in_impact of a point an impact bounced */
+#define IMPACT_BOUNCED 2
+
 static double effective_mass (const solver_body *a, const solver_body *b, double ra_d, double rb_d)
 {
   double k = a->im + b->im + a->ii * ra_d * ra_d + b->ii * rb_d * rb_d;
@@ -206,15 +213,20 @@ static int begins_resting (const contact *k, const step_context *ctx)
   return 1;
 }
 
-/* A contact whose bodies fly free into an impact within the step: every
- * point apart at detection, none resting (near and slow), and one closing
- * faster than resting contact ever does and meeting within the step. Its
+/* A contact whose bodies may fly free into an impact within the step:
+ * every point apart at detection, none resting (near and slow), and one
+ * closing faster than resting contact ever does and meeting within the
+ * step, or within the distance the bodies' turning carries them. Its
  * pieces are polygons' convex pieces or circles (the time of impact follows
  * their separation, contact_separation_at). */
-static int impact_within_step (const carom_world *world, const contact *k, const step_context *ctx)
+static int impact_within_step (const carom_world *world, const contact *k, const solver_body *a,
+                               const solver_body *b, const step_context *ctx)
 {
+  const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
+  /* how far the bodies' turning can carry their surfaces in the step */
+  double turn = (fabs (a->w) * ba->shape.bound_radius + fabs (b->w) * bb->shape.bound_radius) * ctx->dt;
   int32_t j, hits = 0;
-  if (k->piece_a < 0 && k->piece_b < 0 && world->bodies[k->a].shape.kind == CAROM_SHAPE_POLYGON)
+  if (k->piece_a < 0 && k->piece_b < 0 && ba->shape.kind == CAROM_SHAPE_POLYGON)
     return 0; /* the vertex-edge method's whole outlines */
   for (j = 0; j < k->count; ++j)
     {
@@ -222,6 +234,9 @@ static int impact_within_step (const carom_world *world, const contact *k, const
       if (!(p->depth < 0.0) || (p->depth >= -k->slop && !(fabs (p->approach) >= ctx->restitution_threshold)))
         return 0;
       hits |= p->approach < -ctx->restitution_threshold && p->toi >= 0.0 && p->toi < ctx->dt;
+      /* a fast turn can bring another corner in, which the points' own
+       * linear estimate does not see */
+      hits |= -p->depth < turn;
     }
   return hits;
 }
@@ -273,6 +288,7 @@ static void impact_point (contact *k, contact_point *p, const manifold_point *q,
   p->rb = rb0;
   p->adjusted = s0 - v2_dot (v2_sub (rb0, ra0), q->normal);
   impact_arms (k, p, ba, bb, a, b, ctx, t, ra, rb);
+  p->in_impact = 1;
 }
 
 /* A detected point of an impact that the touch has no point for: it keeps
@@ -292,13 +308,14 @@ static void impact_guard_point (contact *k, contact_point *p, const body *ba, co
   p->rb = separation_arm (bb, rb0);
   p->adjusted = -p->depth - v2_dot (v2_sub (p->rb, p->ra), p->normal);
   impact_arms (k, p, ba, bb, a, b, ctx, t, ra, rb);
+  p->in_impact = 0; /* it does not touch then */
 }
 
 /* An impact (impact_within_step) where its pieces first touch, each body in
  * free flight until then (toi.c): the points of the touch (within the slop
  * of it) take the place of the detected points of the same features, and
  * the deepest, if no feature matches, that of the detected point meeting
- * first. The other detected points stay (impact_guard_point): they guard
+ * first (or of the first). The other detected points stay (impact_guard_point): they guard
  * the rest of the step (a body an impact sets spinning turns its other
  * corners towards the surface). When the pieces do not touch within the
  * step, the contact takes no impulse in it. */
@@ -347,9 +364,15 @@ static void impact_points (carom_world *world, contact *k, const body *ba, const
         if (!(taken & (1u << j)) && k->points[j].feature == m.points[i].feature)
           at = j;
       if (at < 0 && i == 0)
-        for (j = 0; j < k->count; ++j)
-          if (k->points[j].toi >= 0.0 && (at < 0 || k->points[j].toi < k->points[at].toi))
-            at = j;
+        {
+          /* the detected point meeting first, or, when none meets by
+           * itself (the touch is another corner, turned in), the first */
+          for (j = 0; j < k->count; ++j)
+            if (k->points[j].toi >= 0.0 && (at < 0 || k->points[j].toi < k->points[at].toi))
+              at = j;
+          if (at < 0)
+            at = 0;
+        }
       if (at < 0)
         continue;
       taken |= 1u << at;
@@ -368,6 +391,7 @@ void contact_prepare (carom_world *world, const step_context *ctx)
   int32_t i, j;
   c->fine_count = 0;
   c->cold_count = 0;
+  c->bouncy_count = 0;
   for (i = 0; i < c->count; ++i)
     {
       contact *k = &c->list[i];
@@ -376,6 +400,9 @@ void contact_prepare (carom_world *world, const step_context *ctx)
       double reach = ba->shape.bound_radius < bb->shape.bound_radius ? ba->shape.bound_radius : bb->shape.bound_radius;
       k->max_push = CONTACT_PUSH_PER_STEP * reach * ctx->inv_dt;
       k->met = 0;
+      k->queued = 0;
+      k->impact_at = -1.0;
+      c->bouncy_count += k->restitution > 0.0;
       /* a body falls 0.5 g h^2 in a sub-step with nothing to hold it: more
        * than the slop, and one pass cannot keep it resting */
       k->fine = 0.5 * ctx->accel * ctx->h * ctx->h > k->slop;
@@ -403,10 +430,11 @@ void contact_prepare (carom_world *world, const step_context *ctx)
           /* before any impulse of the step (see contact_solve) */
           p->approach = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
           p->after = 0.0;
-          p->total_impulse = p->normal_moment = 0.0;
+          p->total_impulse = p->normal_moment = p->impact_moment = 0.0;
+          p->in_impact = p->depth >= -k->slop || (p->toi >= 0.0 && p->toi < ctx->dt);
           p->tangent_total = p->tangent_moment = 0.0;
         }
-      if (impact_within_step (world, k, ctx))
+      if (impact_within_step (world, k, a, b, ctx))
         impact_points (world, k, ba, bb, a, b, ctx);
       pair_matrix (k, a, b);
       k->cold = begins_resting (k, ctx);
@@ -633,6 +661,214 @@ double contact_solve (carom_world *world, const step_context *ctx, int32_t kicks
   return most;
 }
 
+/* ------------------------------------------------------------ impacts */
+
+/* The approach speed below which a point along normal n does not bounce:
+ * the step's threshold (what gravity adds in two steps) for the part of
+ * gravity along n. Resting contact meets its support at about one step's
+ * gravity along its normal; a contact across gravity (a ball striking a row
+ * on a floor) meets none, and bounces at any speed. */
+static double impact_threshold (const step_context *ctx, vec2 n)
+{
+  return ctx->accel > 0.0 ? ctx->restitution_threshold * fabs (v2_dot (ctx->gravity, n)) / ctx->accel : 0.0;
+}
+
+/* An impact of the step: a bouncy contact (e > 0) that closes faster than
+ * resting contact ever does (impact_threshold), touching now (it meets at
+ * 0) or apart and meeting within the step (at its earliest point's time of
+ * impact). */
+static int impact_seed (const contact *k, const step_context *ctx, double *at)
+{
+  int32_t j, seed = 0;
+  double t = ctx->dt;
+  if (k->restitution == 0.0)
+    return 0;
+  for (j = 0; j < k->count; ++j)
+    {
+      const contact_point *p = &k->points[j];
+      double when;
+      if (p->normal_mass == 0.0 || !(p->approach < -impact_threshold (ctx, p->normal)))
+        continue;
+      if (p->depth < 0.0 && p->toi >= 0.0 && p->toi < ctx->dt)
+        when = p->toi;
+      else if (p->depth >= -k->slop)
+        when = 0.0;
+      else
+        continue;
+      seed = 1;
+      t = when < t ? when : t;
+    }
+  *at = t;
+  return seed;
+}
+
+/* Whether an impact passes on through contact k: it touched at detection
+ * (every point within the slop), or is an impact of the step itself. */
+static int impact_passes (const contact *k)
+{
+  int32_t j;
+  if (k->impact_at >= 0.0)
+    return 1;
+  for (j = 0; j < k->count; ++j)
+    if (k->points[j].depth < -k->slop)
+      return 0;
+  return k->count > 0;
+}
+
+/* The pairwise impact of contact k at time t into the step, if it closes
+ * there faster than `tol` beyond its impact_threshold: each point's normal speed then (the bodies'
+ * velocities now, plus what gravity adds until t) leaves at minus e times
+ * itself; eq. 3.23 for one point, both at once (the 2x2 problem) for two. Its impulses count
+ * towards the step's totals and, times t, towards the move that puts the
+ * bodies where an impulse at t leaves them (contact_time_of_impact); the
+ * bounce is an event of its step and is not warm started. Returns whether
+ * it acted. */
+static int impact_event (contact *k, solver_body *a, solver_body *b, const step_context *ctx, double t, double tol)
+{
+  double speed[MANIFOLD_MAX_POINTS], lambda[MANIFOLD_MAX_POINTS];
+  int32_t j, closing = 0, taking = 0;
+  for (j = 0; j < k->count; ++j)
+    {
+      contact_point *p = &k->points[j];
+      lambda[j] = 0.0;
+      speed[j] = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + relative_fall (a, b, p->normal, ctx) * t;
+      if (!p->in_impact || p->normal_mass == 0.0)
+        continue;
+      ++taking;
+      closing |= speed[j] < -(tol + impact_threshold (ctx, p->normal));
+    }
+  if (!closing)
+    return 0;
+  if (k->count == 2 && k->block && taking == 2)
+    {
+      /* a closing point leaves at e times its speed; one leaving already
+       * may be pushed back to minus its speed at most (the time reverse
+       * of a bounce), so no impulse adds energy */
+      double b1 = (1.0 + (speed[0] < 0.0 ? k->restitution : 1.0)) * speed[0];
+      double b2 = (1.0 + (speed[1] < 0.0 ? k->restitution : 1.0)) * speed[1];
+      if (!contact_lcp2 (k->k11, k->k12, k->k22, b1, b2, &lambda[0], &lambda[1]))
+        lambda[0] = lambda[1] = 0.0;
+    }
+  else
+    {
+      /* one at a time: the deepest-closing first */
+      for (j = 0; j < k->count; ++j)
+        {
+          contact_point *p = &k->points[j];
+          double vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + relative_fall (a, b, p->normal, ctx) * t;
+          lambda[j] = p->in_impact && vn < 0.0 ? -(1.0 + k->restitution) * vn * p->normal_mass : 0.0;
+          contact_push (a, b, p->normal, p->rn_a, p->rn_b, lambda[j]);
+        }
+      for (j = 0; j < k->count; ++j)
+        contact_push (a, b, k->points[j].normal, k->points[j].rn_a, k->points[j].rn_b, -lambda[j]);
+    }
+  for (j = 0; j < k->count; ++j)
+    {
+      contact_point *p = &k->points[j];
+      if (lambda[j] == 0.0)
+        continue;
+      contact_push (a, b, p->normal, p->rn_a, p->rn_b, lambda[j]);
+      p->total_impulse += lambda[j];
+      p->impact_moment += lambda[j] * t;
+    }
+  /* the bounce is done: the end of the step does not bounce its points
+   * again, nor does a sub-step's first push count as its meeting */
+  for (j = 0; j < k->count; ++j)
+    if (k->points[j].in_impact && k->points[j].normal_mass > 0.0)
+      {
+        k->points[j].approach = 0.0;
+        k->points[j].in_impact = IMPACT_BOUNCED;
+      }
+  k->met = 1;
+  return 1;
+}
+
+void contact_impacts (carom_world *world, const step_context *ctx)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  int32_t *seeds = world->restitution_list, *work = world->batch_scratch, *start = NULL, *adj = NULL;
+  int32_t i, j, n = 0, s;
+  double fastest = 0.0, tol;
+  c->impacts = 0;
+  if (c->bouncy_count == 0)
+    return;
+  for (i = 0; i < c->count; ++i)
+    {
+      contact *k = &c->list[i];
+      double at;
+      if (!impact_seed (k, ctx, &at))
+        continue;
+      k->impact_at = at;
+      for (j = 0; j < k->count; ++j)
+        fastest = fmax (fastest, -k->points[j].approach);
+      /* in the order they happen (insertion: ties keep list order) */
+      for (j = n++; j > 0 && c->list[seeds[j - 1]].impact_at > at; --j)
+        seeds[j] = seeds[j - 1];
+      seeds[j] = i;
+    }
+  if (n == 0)
+    return;
+  tol = RESTITUTION_TOLERANCE * fastest;
+  solver_contact_adjacency (world, &start, &adj);
+  for (s = 0; s < n; ++s)
+    {
+      /* the impact, then the impacts it makes through the bodies it
+       * touches, all at its moment, until nothing there closes (a work
+       * list of contacts, each in it once at a time: a ring of c->count) */
+      double t = c->list[seeds[s]].impact_at;
+      int32_t head = 0, queued = 1, events = 0, limit = IMPACT_MAX_EVENTS * (c->count + 1);
+      work[0] = seeds[s];
+      c->list[seeds[s]].queued = 1;
+      while (queued > 0 && events < limit)
+        {
+          contact *k = &c->list[work[head]];
+          int32_t e, side;
+          head = (head + 1) % c->count;
+          --queued;
+          k->queued = 0;
+          ++events;
+          if (!impact_event (k, &sb[k->a], &sb[k->b], ctx, t, tol))
+            continue;
+          ++c->impacts;
+          for (side = 0; side < 2; ++side)
+            {
+              int32_t body = side ? k->b : k->a;
+              if (sb[body].im == 0.0)
+                continue;
+              for (e = start[body]; e < start[body + 1]; ++e)
+                {
+                  contact *o = &c->list[adj[e]];
+                  if (o->queued || !impact_passes (o))
+                    continue;
+                  o->queued = 1;
+                  work[(head + queued) % c->count] = adj[e];
+                  ++queued;
+                }
+            }
+        }
+      while (queued > 0) /* the limit cut it short */
+        {
+          c->list[work[head]].queued = 0;
+          head = (head + 1) % c->count;
+          --queued;
+        }
+    }
+  /* what the end of the step bounces (contact_restitution) is measured on
+   * one common state, for e = 1 to keep the energy: now the one after the
+   * impacts */
+  for (i = 0; i < c->count; ++i)
+    {
+      contact *k = &c->list[i];
+      for (j = 0; j < k->count; ++j)
+        {
+          contact_point *p = &k->points[j];
+          if (p->in_impact != IMPACT_BOUNCED)
+            p->approach = contact_speed (&sb[k->a], &sb[k->b], p->normal, p->rn_a, p->rn_b);
+        }
+    }
+}
+
 /* Whether a point takes part in restitution: some impulse of the step acted
  * on it, and it met the other body faster than the threshold, or was
  * leaving it faster than that and was pushed back by impacts elsewhere (a
@@ -770,6 +1006,25 @@ void contact_time_of_impact (carom_world *world, const step_context *ctx)
     {
       contact *k = &c->list[i];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
+      for (j = 0; j < k->count && c->impacts > 0; ++j)
+        {
+          /* contact_impacts applied each impact at the start of the step,
+           * which moved the bodies by P dt / m by its end, where the event
+           * at t moves them P (dt - t) / m: the difference, P t / m, back */
+          const contact_point *p = &k->points[j];
+          double dn = p->impact_moment;
+          if (dn == 0.0)
+            continue;
+          a->dp = v2_mad (a->dp, a->im * dn, p->normal);
+          a->da += a->ii * p->rn_a * dn;
+          b->dp = v2_mad (b->dp, -b->im * dn, p->normal);
+          b->da -= b->ii * p->rn_b * dn;
+          if (p->toi >= 0.0)
+            {
+              impact_drift (a, ctx);
+              impact_drift (b, ctx);
+            }
+        }
       if (k->restitution == 0.0)
         continue; /* the approach stopped at the meeting: already exact */
       for (j = 0; j < k->count; ++j)

@@ -29,6 +29,11 @@ double contact_solve (struct carom_world *world, const step_context *ctx, int32_
  * so position correction never changes a velocity. `first`: the sub-step's
  * first pass, which starts from no pseudo-impulse. */
 void contact_push_out (struct carom_world *world, const step_context *ctx, int first);
+/* Before the sub-steps: the bouncy impacts of the step in the order they
+ * happen, each the impulse of eq. 3.23 at its time, passed on through the
+ * bodies it touches as pairwise impacts (the sequential model,
+ * docs/physics.md). */
+void contact_impacts (struct carom_world *world, const step_context *ctx);
 /* After the sub-steps: points that were struck leave at e times the speed
  * they met with (eq. 3.18). */
 void contact_restitution (struct carom_world *world, const step_context *ctx);

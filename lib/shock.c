@@ -26,24 +26,9 @@ static int32_t order_by_level (carom_world *world, int32_t *order)
   const contacts *c = &world->contacts;
   const solver_body *sb = world->solver_bodies;
   int32_t n = world->slot_count, i, head = 0, tail = 0, count = 0;
-  int32_t *level = world->solver_scratch, *start = level + n, *adj = start + n + 1, *queue = adj + 2 * c->count;
-  for (i = 0; i <= n; ++i)
-    start[i] = 0;
-  for (i = 0; i < c->count; ++i)
-    {
-      start[c->list[i].a + 1]++;
-      start[c->list[i].b + 1]++;
-    }
-  for (i = 0; i < n; ++i)
-    start[i + 1] += start[i];
-  for (i = 0; i < c->count; ++i)
-    {
-      adj[start[c->list[i].a]++] = i;
-      adj[start[c->list[i].b]++] = i;
-    }
-  for (i = n; i > 0; --i)
-    start[i] = start[i - 1];
-  start[0] = 0;
+  int32_t *level = world->solver_scratch, *start, *adj, *queue;
+  solver_contact_adjacency (world, &start, &adj);
+  queue = adj + 2 * c->count;
   for (i = 0; i < n; ++i)
     {
       level[i] = -1;

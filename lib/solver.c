@@ -162,6 +162,32 @@ void solver_destroy (carom_world *world)
   world->solver_cap = world->scratch_cap = world->restitution_cap = 0;
 }
 
+void solver_contact_adjacency (carom_world *world, int32_t **start_out, int32_t **adj_out)
+{
+  const contacts *c = &world->contacts;
+  int32_t n = world->slot_count, i;
+  int32_t *start = world->solver_scratch + n, *adj = start + n + 1;
+  for (i = 0; i <= n; ++i)
+    start[i] = 0;
+  for (i = 0; i < c->count; ++i)
+    {
+      start[c->list[i].a + 1]++;
+      start[c->list[i].b + 1]++;
+    }
+  for (i = 0; i < n; ++i)
+    start[i + 1] += start[i];
+  for (i = 0; i < c->count; ++i)
+    {
+      adj[start[c->list[i].a]++] = i;
+      adj[start[c->list[i].b]++] = i;
+    }
+  for (i = n; i > 0; --i)
+    start[i] = start[i - 1];
+  start[0] = 0;
+  *start_out = start;
+  *adj_out = adj;
+}
+
 void solver_step (carom_world *world, const step_context *ctx)
 {
   int contacts = world->contacts.count > 0;
@@ -174,6 +200,7 @@ void solver_step (carom_world *world, const step_context *ctx)
     {
       world->level_count = -1;
       contact_prepare (world, ctx);
+      contact_impacts (world, ctx);
       contact_cold_start (world, ctx);
       contact_batch_prepare (world, ctx);
       contact_shock_prepare (world, ctx);

@@ -46,6 +46,10 @@ typedef struct solver_body {
 /* Room for one solver body per slot; 0 when memory ran out. Called before
  * any state changes in a step, so solver_step itself cannot fail. */
 int solver_reserve (struct carom_world *world);
+/* Each body's contacts: those of slot i are adj[start[i]] to
+ * adj[start[i + 1] - 1] (in solver_scratch, which shock.c's levels also
+ * use). */
+void solver_contact_adjacency (struct carom_world *world, int32_t **start, int32_t **adj);
 /* One update: the sub-steps over the contacts found at its start. */
 void solver_step (struct carom_world *world, const step_context *ctx);
 void solver_destroy (struct carom_world *world);

@@ -6,8 +6,9 @@
  * than a bound mu on how fast any feature of one can approach the other,
  * and is 0 exactly when they touch. Conservative advancement, t += g / mu,
  * never passes the first touch; a secant through its last two trials, or
- * twice as far, usually steps past it at once (it may step over a touch
- * and a parting within that stretch, which a grazing corner could make),
+ * two, four or eight times as far, usually steps past it at once (it may
+ * step over a touch and a parting within that stretch, which a grazing
+ * corner could make),
  * and then the touch is bracketed and found
  * by regula falsi (the Illinois variant) to a separation of
  * TOI_TOUCH times the pair's slop (near the rounding of the coordinates). */
@@ -18,7 +19,10 @@
 /* Touching: a separation below this fraction of the pair's slop. */
 #define TOI_TOUCH 1e-12
 /* At most this many advancements, and this many regula falsi trials. */
-#define TOI_MAX_ADVANCES 48
+#define TOI_MAX_ADVANCES 128
+/* The secant's trials each advancement: its point, then twice, four and
+ * eight times as far. */
+#define TOI_SECANT_TRIALS 4
 #define TOI_MAX_REFINES 64
 
 xform toi_pose (const carom_world *world, int32_t i, const solver_body *sb, const step_context *ctx, double t)
@@ -136,19 +140,20 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
           /* where it would touch if it kept closing as over the last
            * advance: not safe to stand on, but overlapping there brackets
            * the touch */
-          double ts = tn + sn * (tn - t) / (s - sn), ss;
-          ts = ts < t_max ? ts : t_max;
-          ss = separation (&p, ts);
-          if (ss <= 0.0)
-            return bracketed (&p, tn, sn, ts, ss);
+          double step = sn * (tn - t) / (s - sn), ts, ss;
+          int k;
           /* still apart there: a fall that slows (a corner turning away
            * as it nears), where advancing only creeps up on the touch;
-           * as far again brackets it */
-          ts = tn + 2.0 * (ts - tn);
-          ts = ts < t_max ? ts : t_max;
-          ss = separation (&p, ts);
-          if (ss <= 0.0)
-            return bracketed (&p, tn, sn, ts, ss);
+           * twice, four and eight times as far bracket it */
+          for (k = 0; k < TOI_SECANT_TRIALS; ++k, step *= 2.0)
+            {
+              ts = tn + step < t_max ? tn + step : t_max;
+              ss = separation (&p, ts);
+              if (ss <= 0.0)
+                return bracketed (&p, tn, sn, ts, ss);
+              if (ts == t_max)
+                break;
+            }
         }
       t = tn, s = sn;
     }
