@@ -220,6 +220,26 @@ static double box_first_touch (double hx, double hy, double cx, double vx, doubl
   return hi;
 }
 
+/* The first impact of a box (density 1, half sides hx, hy) in free flight
+ * from (cx, .) at (vx0, .), angle a0, spin w0, on the wall face x = 0:
+ * its time (returned), the angle and corner then, and eq. 3.23's velocity
+ * and spin after it, with n = (-1, 0) from the wall to the box:
+ * (v + w x r) . n = -(vx - w r_y) and r x n = r_y. */
+static double corner_impact (double hx, double hy, double cx, double vx0, double a0, double w0, double e, double *a,
+                             int *corner, double *want_vx, double *want_w)
+{
+  double m = 4.0 * hx * hy, inertia = m * (4.0 * hx * hx + 4.0 * hy * hy) / 12.0, t, ry, vpn, j;
+  t = box_first_touch (hx, hy, cx, vx0, a0, w0);
+  *a = a0 + w0 * t;
+  box_reach_x (hx, hy, cx, vx0, a0, w0, t, corner);
+  ry = sin (*a) * (*corner == 1 || *corner == 2 ? hx : -hx) + cos (*a) * (*corner >= 2 ? hy : -hy);
+  vpn = -(vx0 - w0 * ry);
+  j = -(1.0 + e) * vpn / (1.0 / m + ry * ry / inertia);
+  *want_vx = vx0 - j / m;
+  *want_w = w0 + ry * j / inertia;
+  return t;
+}
+
 /* A 0.5 x 0.3 box, tilted so one corner leads, spinning at 0, +-3 and +-12
  * rad/s, thrown at a static wall at (2.5, vy) from 24 angles and 5
  * distances, e = 1 and 0.5, continuous collision on: the step of its
@@ -248,22 +268,13 @@ static void test_corner_hit_is_the_closed_form (void **state)
             carom_world_def def;
             carom_body_def d;
             carom_body_id box;
-            double a0 = 0.1 + 2.0 * M_PI * ia / 24.0, vy0 = 0.3 * (ia % 3 - 1), w0 = spins[is], cx, t_hit, a, ry, vpn,
-                   rn, j;
+            double a0 = 0.1 + 2.0 * M_PI * ia / 24.0, vy0 = 0.3 * (ia % 3 - 1), w0 = spins[is], cx, t_hit, a;
             double want_vx, want_vy, want_w, vx, vy, ws, err, reach;
             int corner, step, hit_step, isolated, i;
             cx = -box_reach_x (hx, hy, 0.0, 0.0, a0, 0.0, 0.0, &corner) - 0.05 - 0.23 * vx0 * dt * id;
-            t_hit = box_first_touch (hx, hy, cx, vx0, a0, w0);
+            t_hit = corner_impact (hx, hy, cx, vx0, a0, w0, es[ie], &a, &corner, &want_vx, &want_w);
             hit_step = (int) floor (t_hit / dt);
-            a = a0 + w0 * t_hit;
-            box_reach_x (hx, hy, cx, vx0, a0, w0, t_hit, &corner);
-            ry = sin (a) * (corner == 1 || corner == 2 ? hx : -hx) + cos (a) * (corner >= 2 ? hy : -hy);
-            /* eq. 3.23 at the corner, n = (-1, 0) from the wall to the box:
-             * (v + w x r) . n = -(vx - w ry), r x n = ry */
-            vpn = -(vx0 - w0 * ry);
-            rn = ry;
-            j = -(1.0 + es[ie]) * vpn / (1.0 / m + rn * rn / inertia);
-            want_vx = vx0 - j / m, want_vy = vy0, want_w = w0 + rn * j / inertia;
+            want_vy = vy0;
             /* an isolated corner: every other corner stays farther from the
              * wall at the touch than it can travel in a step, before the
              * impact or after it */
@@ -341,18 +352,12 @@ static void test_spinning_bar_leaves_a_wall_as_the_closed_form (void **state)
           carom_world_def def;
           carom_body_def d;
           carom_body_id bar;
-          double a0 = 2.0 * M_PI * ia / 24.0, w0 = spins[is] * (ia % 2 ? -1.0 : 1.0), cx, t_hit, a, ry, vpn, j;
+          double a0 = 2.0 * M_PI * ia / 24.0, w0 = spins[is] * (ia % 2 ? -1.0 : 1.0), cx, t_hit, a;
           double want_vx, want_w, vx, vy, ws, err;
           int corner, step, hit_step;
           cx = -box_reach_x (hx, hy, 0.0, 0.0, a0, 0.0, 0.0, &corner) - 0.1 - 0.37 * vx0 * dt * (ia % 5);
-          t_hit = box_first_touch (hx, hy, cx, vx0, a0, w0);
+          t_hit = corner_impact (hx, hy, cx, vx0, a0, w0, es[ie], &a, &corner, &want_vx, &want_w);
           hit_step = (int) floor (t_hit / dt);
-          a = a0 + w0 * t_hit;
-          box_reach_x (hx, hy, cx, vx0, a0, w0, t_hit, &corner);
-          ry = sin (a) * (corner == 1 || corner == 2 ? hx : -hx) + cos (a) * (corner >= 2 ? hy : -hy);
-          vpn = -(vx0 - w0 * ry);
-          j = -(1.0 + es[ie]) * vpn / (1.0 / m + ry * ry / inertia);
-          want_vx = vx0 - j / m, want_w = w0 + ry * j / inertia;
           carom_world_def_init (&def, sizeof def);
           def.restitution = es[ie];
           assert_status (carom_world_init (&w, &def), CAROM_OK);
