@@ -127,14 +127,12 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
         return TOI_APART; /* neither moves */
       tn = t + s / mu;
       if (!(tn < t_max))
-        tn = t_max;
+        return TOI_APART; /* it cannot close the gap by then */
       sn = separation_axis (&p, tn, &axis);
       if (sn <= 0.0)
         return bracketed (&p, t, s, tn, sn);
       if (sn <= p.tol)
         return tn;
-      if (tn == t_max)
-        return TOI_APART;
       if (sn < s)
         {
           /* where it would touch if it kept closing as over the last
