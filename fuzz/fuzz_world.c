@@ -808,7 +808,8 @@ static void add_fuzzed_joint (fuzz_world *f)
   if (d.type > CAROM_JOINT_MOUSE || d.a == d.b || (d.type == CAROM_JOINT_MOUSE && d.a != CAROM_NULL_BODY)
       || (d.enable_limit && d.lower > d.upper) || d.max_motor_force < 0.0 || d.max_motor_torque < 0.0
       || d.hertz < 0.0 || d.damping_ratio < 0.0 || d.length < 0.0
-      || ((d.type == CAROM_JOINT_PRISMATIC || d.type == CAROM_JOINT_WHEEL) && d.axis_x == 0.0 && d.axis_y == 0.0))
+      || ((d.type == CAROM_JOINT_PRISMATIC || d.type == CAROM_JOINT_WHEEL)
+          && !(d.axis_x * d.axis_x + d.axis_y * d.axis_y > 0.0))) /* no direction, or one that underflows */
     problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
   if (d.type == CAROM_JOINT_DISTANCE && d.length == 0.0 && d.x == d.x2 && d.y == d.y2)
     problems |= BIT (CAROM_ERR_BAD_ARGUMENT);
