@@ -30,9 +30,10 @@ int32_t collide_polygon_circle (const convex_piece *a, xform xa, vec2 cb, double
 
 /* The largest separation of two convex pieces along their edge normals (the
  * candidate axes of thesis fig. 3.7): negative when they overlap, 0 when
- * they touch, and when apart never more than their distance. *of_b: 1 when
- * the axis is an edge normal of b, 0 of a. */
-double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, int *of_b);
+ * they touch, and when apart never more than their distance: the gap
+ * between the two pieces' projections on that edge normal, *axis, turned to
+ * point from a towards b. */
+double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis);
 
 /* Separating axis theorem with the minimum push vector (thesis 3.2.1): the
  * axis of least overlap among the edge normals of both pieces gives the

@@ -43,12 +43,12 @@ static double max_separation (const convex_piece *p, xform xp, const convex_piec
   return best;
 }
 
-double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, int *of_b)
+double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis)
 {
-  int32_t edge, outer_edge;
-  double outer, sa = max_separation (a, xa, b, xb, INFINITY, &edge, &outer, &outer_edge);
-  double sb = max_separation (b, xb, a, xa, INFINITY, &edge, &outer, &outer_edge);
-  *of_b = sb > sa;
+  int32_t edge_a, edge_b, outer_edge;
+  double outer, sa = max_separation (a, xa, b, xb, INFINITY, &edge_a, &outer, &outer_edge);
+  double sb = max_separation (b, xb, a, xa, INFINITY, &edge_b, &outer, &outer_edge);
+  *axis = sb > sa ? v2_neg (rot2_apply (xb.q, b->normals[edge_b])) : rot2_apply (xa.q, a->normals[edge_a]);
   return sa > sb ? sa : sb;
 }
 

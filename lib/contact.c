@@ -319,7 +319,53 @@ void contact_collide_at (const carom_world *world, const contact *k, xform xa, x
   narrow_phase (world, k->a, k->b, k->piece_a, k->piece_b, P, Q, xa, xb, margin, m);
 }
 
-double contact_separation_at (const carom_world *world, const contact *k, xform xa, xform xb, int *axis)
+/* The largest of a cos(d) + b sin(d) over |d| <= turn (turn <= pi/2),
+ * bounded from above: a if a >= 0 else a cos(turn), plus |b| sin(turn). */
+static double turned_bound (double a, double b, double c, double s)
+{
+  return (a >= 0.0 ? a : a * c) + fabs (b) * s;
+}
+
+/* How far the points of body B's piece (or its whole outline, or its
+ * circle) reach from its centre along the unit direction d while the body
+ * turns from q by at most `turn` either way: in the body's frame the
+ * direction turns by as much, so a vertex v reaches a cos + b sin of that
+ * turn, a and b its coordinates along the direction and across it. Past a
+ * quarter turn, its bounding radius. */
+static double piece_reach_along (const body *B, int32_t piece, rot2 q, vec2 d, double turn)
+{
+  vec2 u = rot2_apply_inv (q, d), w = v2_perp (u);
+  double c = cos (turn), s = sin (turn), best = -INFINITY;
+  const vec2 *v;
+  int32_t i, n;
+  if (B->shape.kind == CAROM_SHAPE_CIRCLE)
+    return B->shape.radius;
+  if (!(turn <= 0.5 * CAROM_PI))
+    return B->shape.bound_radius;
+  if (piece < 0)
+    v = B->shape.vertices, n = B->shape.count;
+  else if (B->shape.pieces[piece].count == 0)
+    {
+      vec2 o = B->shape.pieces[piece].center;
+      return turned_bound (v2_dot (u, o), v2_dot (w, o), c, s) + B->shape.pieces[piece].radius;
+    }
+  else
+    v = B->shape.pieces[piece].vertices, n = B->shape.pieces[piece].count;
+  for (i = 0; i < n; ++i)
+    {
+      double r = turned_bound (v2_dot (u, v[i]), v2_dot (w, v[i]), c, s);
+      best = r > best ? r : best;
+    }
+  return best;
+}
+
+double contact_reach_along (const carom_world *world, const contact *k, vec2 n, double turn_a, double turn_b)
+{
+  const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
+  return piece_reach_along (A, k->piece_a, A->q, n, turn_a) + piece_reach_along (B, k->piece_b, B->q, v2_neg (n), turn_b);
+}
+
+double contact_separation_at (const carom_world *world, const contact *k, xform xa, xform xb, vec2 *axis)
 {
   const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
   manifold m;
@@ -327,11 +373,7 @@ double contact_separation_at (const carom_world *world, const contact *k, xform 
   int32_t j;
   if (A->shape.kind == CAROM_SHAPE_POLYGON && B->shape.kind == CAROM_SHAPE_POLYGON && k->piece_a >= 0
       && k->piece_b >= 0)
-    {
-      double s = polygons_separation (&A->shape.pieces[k->piece_a], xa, &B->shape.pieces[k->piece_b], xb, axis);
-      *axis = *axis ? CONTACT_AXIS_B : CONTACT_AXIS_A;
-      return s;
-    }
+    return polygons_separation (&A->shape.pieces[k->piece_a], xa, &B->shape.pieces[k->piece_b], xb, axis);
   if (A->shape.kind == CAROM_SHAPE_COMPOUND || B->shape.kind == CAROM_SHAPE_COMPOUND)
     {
       convex_piece ca, cb;
@@ -339,16 +381,16 @@ double contact_separation_at (const carom_world *world, const contact *k, xform 
       body_pieces (A, &P, &ca);
       body_pieces (B, &Q, &cb);
       if (P[k->piece_a].count > 0 && Q[k->piece_b].count > 0)
-        {
-          double s = polygons_separation (&P[k->piece_a], xa, &Q[k->piece_b], xb, axis);
-          *axis = *axis ? CONTACT_AXIS_B : CONTACT_AXIS_A;
-          return s;
-        }
+        return polygons_separation (&P[k->piece_a], xa, &Q[k->piece_b], xb, axis);
     }
-  *axis = CONTACT_AXIS_NONE;
+  *axis = v2 (1.0, 0.0);
   contact_collide_at (world, k, xa, xb, INFINITY, &m);
   for (j = 0; j < m.count; ++j)
-    deepest = m.points[j].depth > deepest ? m.points[j].depth : deepest;
+    if (m.points[j].depth > deepest)
+      {
+        deepest = m.points[j].depth;
+        *axis = m.points[j].normal;
+      }
   return -deepest;
 }
 
@@ -443,6 +485,35 @@ static void sensor_pair (carom_world *world, int32_t a, int32_t b)
   c->sensor_count++;
 }
 
+/* Whether a pair whose margin continuous collision widened (pc.margin
+ * beyond what the capped reaches give) cannot come within the capped margin
+ * in this step: the bodies' bounding circles, which hold every piece at any
+ * angle, are followed along the relative motion of their centres, exactly
+ * for the velocities (the closest approach within [0, dt]) and with what
+ * gravity can add bounded as in body_reach. Such a pair has nothing to meet:
+ * a pair passing by, moving apart, or too far to close its gap takes no
+ * narrow phase, no contact and no time-of-impact search. The pairs the
+ * capped margin would keep are all kept (their gap at the start is already
+ * within it), so switching continuous collision on only adds contacts. */
+static int pair_stays_apart (const body *A, const body *B, double reach_a, double reach_b, double slop, double margin,
+                             const step_context *ctx)
+{
+  double near = slop + body_reach_capped (A, reach_a, 0) + body_reach_capped (B, reach_b, 0);
+  vec2 d, v;
+  double vv, t, closest, fall;
+  if (!(margin > near))
+    return 0;
+  d = v2_sub (B->p, A->p);
+  v = v2_sub (B->v, A->v);
+  vv = v2_dot (v, v);
+  /* the time within [0, dt] at which |d + v t| is least */
+  t = vv > 0.0 ? -v2_dot (d, v) / vv : 0.0;
+  t = t < 0.0 ? 0.0 : t > ctx->dt ? ctx->dt : t;
+  closest = v2_len (v2_mad (d, t, v));
+  fall = ctx->accel * ctx->dt * ctx->dt * ((A->inv_mass > 0.0) + (B->inv_mass > 0.0));
+  return closest - A->shape.bound_radius - B->shape.bound_radius - fall > near;
+}
+
 /* A body the sub-steps can move, or one that moves on its own. */
 static int can_move (const body *b)
 {
@@ -488,6 +559,8 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
    * are contacts now, so impacts are met before the bodies overlap */
   pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], ctx->continuous || B->bullet)
               + body_reach_capped (B, world->broad.reach[b], ctx->continuous || A->bullet);
+  if (pair_stays_apart (A, B, world->broad.reach[a], world->broad.reach[b], pc.slop, pc.margin, ctx))
+    return;
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   pc.pieces_a = pc.pieces_b = NULL;

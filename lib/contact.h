@@ -123,13 +123,19 @@ int contact_bodies_overlap (const struct body *a, const struct body *b);
  * and xb instead of where they are (the time of impact, toi.c). */
 void contact_collide_at (const struct carom_world *world, const contact *k, xform xa, xform xb, double margin,
                          manifold *m);
+/* How far contact k's two pieces reach towards each other along the unit
+ * axis n (A's along n, B's along -n, each from its body's centre), their
+ * bodies where they are now and turned by at most turn_a and turn_b either
+ * way: with the centres' gap along n, a bound on the pieces' gap along n
+ * through any such turn. */
+double contact_reach_along (const struct carom_world *world, const contact *k, vec2 n, double turn_a, double turn_b);
 /* The separation of contact k's two pieces placed at xa and xb: the largest
  * over the edge normals for two polygons (polygons_separation), the
  * distance less the radius with a circle. Never more than their distance;
- * 0 when they touch. *axis: whose edge normal it is measured along (A's,
- * B's, or NONE: the distance). */
-enum { CONTACT_AXIS_NONE = 0, CONTACT_AXIS_A = 1, CONTACT_AXIS_B = 2 };
-double contact_separation_at (const struct carom_world *world, const contact *k, xform xa, xform xb, int *axis);
+ * 0 when they touch. It is the gap between the pieces' projections on the
+ * unit axis *axis (from A towards B): an edge normal, or the direction of
+ * the distance. */
+double contact_separation_at (const struct carom_world *world, const contact *k, xform xa, xform xb, vec2 *axis);
 /* Forget every contact that involves `slot` (the body is being removed). */
 void contacts_forget_body (struct carom_world *world, int32_t slot);
 

@@ -2,16 +2,19 @@
  *
  * The separation g(t) of two pieces in free flight (contact_separation_at:
  * the largest over the edge normals for polygons, the distance less the
- * radius with a circle) is a lower bound of their distance, falls no faster
- * than a bound mu on how fast any feature of one can approach the other,
- * and is 0 exactly when they touch. Conservative advancement, t += g / mu,
- * never passes the first touch; a secant through its last two trials, or
- * two, four or eight times as far, usually steps past it at once (it may
- * step over a touch and a parting within that stretch, which a grazing
- * corner could make),
- * and then the touch is bracketed and found
- * by regula falsi (the Illinois variant) to a separation of
- * TOI_TOUCH times the pair's slop (near the rounding of the coordinates). */
+ * radius with a circle) is the gap between their projections on an axis n,
+ * is a lower bound of their distance and is 0 exactly when they touch.
+ * Held fixed in the world, the gap along n can close no faster than the
+ * centres approach along n plus each body's spin times its reach (the
+ * turning of a shape moves its extent along a fixed direction no faster):
+ * conservative advancement by the time that bound takes to close g never
+ * passes the first touch, and a bound that never closes it ends the search
+ * at once. A secant through its last two trials, or two, four or eight
+ * times as far, usually steps past the touch at once (it may step over a
+ * touch and a parting within that stretch, which a grazing corner could
+ * make), and then the touch is bracketed and found by regula falsi (the
+ * Illinois variant) to a separation of TOI_TOUCH times the pair's slop (near
+ * the rounding of the coordinates). */
 #include "toi.h"
 
 #include "world.h"
@@ -24,6 +27,10 @@
  * eight times as far. */
 #define TOI_SECANT_TRIALS 4
 #define TOI_MAX_REFINES 64
+/* A bound on the gap that stays above this fraction of the slop through
+ * the step is a verdict of apart (well clear of rounding; nearer, the
+ * search decides). */
+#define TOI_APART_CLEAR 1e-6
 
 xform toi_pose (const carom_world *world, int32_t i, const solver_body *sb, const step_context *ctx, double t)
 {
@@ -50,7 +57,7 @@ typedef struct toi_pair {
   double tol;
 } toi_pair;
 
-static double separation_axis (const toi_pair *p, double t, int *axis)
+static double separation_axis (const toi_pair *p, double t, vec2 *axis)
 {
   return contact_separation_at (p->world, p->k, toi_pose (p->world, p->k->a, p->a, p->ctx, t),
                                 toi_pose (p->world, p->k->b, p->b, p->ctx, t), axis);
@@ -58,7 +65,7 @@ static double separation_axis (const toi_pair *p, double t, int *axis)
 
 static double separation (const toi_pair *p, double t)
 {
-  int axis;
+  vec2 axis;
   return separation_axis (p, t, &axis);
 }
 
@@ -95,6 +102,63 @@ static double bracketed (const toi_pair *p, double lo, double slo, double hi, do
   return lo;
 }
 
+/* The first time within [0, t_max] at which two circles of radii summing to
+ * `reach`, centres d apart and moving apart at v (relative), meet, or -1
+ * if they do not: |d + v t| = reach, the smaller root (in the form that
+ * does not cancel). */
+static double circles_meet (vec2 d, vec2 v, double reach, double t_max)
+{
+  double c = v2_dot (d, d) - reach * reach, dv = v2_dot (d, v), vv = v2_dot (v, v), disc, t;
+  if (c <= 0.0)
+    return 0.0;
+  if (!(dv < 0.0))
+    return -1.0; /* not closing */
+  disc = dv * dv - vv * c;
+  if (disc < 0.0)
+    return -1.0; /* passing by */
+  t = c / (sqrt (disc) - dv);
+  return t <= t_max ? t : -1.0;
+}
+
+/* Whether the pieces stay apart along the fixed world axis n all through
+ * [0, t_max]: their gap along n is at least the centres' gap along n less
+ * how far the pieces reach along it through any turn the step can give
+ * their bodies (contact_reach_along, |w| t_max each), and the centres' gap
+ * is g0 + (n . v) t + (n . g) t^2 / 2 (v, g: B's velocity and gravity less
+ * A's). Its least value over the step, clear of the touch by more than
+ * rounding, is a verdict for the price of two projections: most pairs that
+ * only the turning of their bodies might bring together end here. */
+static int fixed_axis_apart (const toi_pair *p, vec2 n, vec2 v, vec2 g, double t_max)
+{
+  const body *A = &p->world->bodies[p->k->a], *B = &p->world->bodies[p->k->b];
+  double reach = contact_reach_along (p->world, p->k, n, fabs (p->a->w) * t_max, fabs (p->b->w) * t_max);
+  double g0 = v2_dot (n, v2_sub (B->p, A->p)) - reach;
+  double rate = v2_dot (n, v), curve = v2_dot (n, g);
+  double least = g0 + t_max * (rate + 0.5 * curve * t_max), t;
+  least = g0 < least ? g0 : least;
+  t = curve > 0.0 ? -rate / curve : 0.0;
+  if (t > 0.0 && t < t_max)
+    {
+      double at = g0 + t * (rate + 0.5 * curve * t);
+      least = at < least ? at : least;
+    }
+  return least > TOI_APART_CLEAR * p->k->slop;
+}
+
+/* How long after t a gap s along the fixed axis n takes to close at the
+ * fastest: the centres approach along n at -n . v (B's velocity less A's at
+ * t), gaining -n . g per unit time at most, and the turning moves the
+ * pieces' extents along n by `turn` per unit time at most: the first root
+ * of s = c1 tau + c2 tau^2 / 2 (in the form that does not cancel), or
+ * infinity when the bound never closes the gap. */
+static double closing_time (double s, vec2 n, vec2 v, vec2 g, double turn)
+{
+  double c1 = turn - v2_dot (n, v), c2 = -v2_dot (n, g);
+  if (c2 > 0.0)
+    return 2.0 * s / (c1 + sqrt (c1 * c1 + 2.0 * c2 * s));
+  return c1 > 0.0 ? s / c1 : INFINITY;
+}
+
 double toi_first_touch (const carom_world *world, const contact *k, const solver_body *a, const solver_body *b,
                         const step_context *ctx, double t_max)
 {
@@ -102,33 +166,39 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
   toi_pair p;
   vec2 ga = a->moves == MOVES_DYNAMIC ? ctx->gravity : v2 (0.0, 0.0);
   vec2 gb = b->moves == MOVES_DYNAMIC ? ctx->gravity : v2 (0.0, 0.0);
-  /* how fast the separation can fall (only the axis that gives it matters:
-   * the largest of several falls no faster than the largest does): the
-   * centres' relative speed, gravity included; along an edge normal of A,
-   * B's turn at its reach and the turn of A's normal over the distance
-   * from A's centre to B's far side (and the same with A and B exchanged);
-   * for a distance, each body's turn at its reach */
-  double lin = v2_len (v2_sub (b->v, a->v)) + v2_len (v2_sub (gb, ga)) * t_max;
-  double wa = fabs (a->w), wb = fabs (b->w), reach_a = A->shape.bound_radius, reach_b = B->shape.bound_radius;
+  vec2 v = v2_sub (b->v, a->v), g = v2_sub (gb, ga), n;
+  double reach_a = A->shape.bound_radius, reach_b = B->shape.bound_radius;
+  double turn = fabs (a->w) * reach_a + fabs (b->w) * reach_b;
   double t = 0.0, s;
-  int i, axis;
+  int i;
   p.world = world, p.k = k, p.a = a, p.b = b, p.ctx = ctx;
   p.tol = TOI_TOUCH * k->slop;
-  s = separation_axis (&p, 0.0, &axis);
+  s = separation_axis (&p, 0.0, &n);
   if (!(s > p.tol) || !(t_max > 0.0))
     return TOI_UNKNOWN;
+  if (fixed_axis_apart (&p, k->points[0].normal, v, g, t_max))
+    return TOI_APART;
+  /* The bodies' bounding circles hold every piece at any angle: no touch
+   * comes before they meet, none at all if they do not (what gravity can
+   * bend their centres' path by, at most |g| t_max^2 / 2, widens them). */
+  t = circles_meet (v2_sub (B->p, A->p), v, reach_a + reach_b + 0.5 * v2_len (g) * t_max * t_max, t_max);
+  if (t < 0.0)
+    return TOI_APART;
+  if (t > 0.0)
+    {
+      double s0 = s;
+      s = separation_axis (&p, t, &n);
+      if (s <= 0.0)
+        return bracketed (&p, 0.0, s0, t, s);
+      if (s <= p.tol)
+        return t;
+    }
   for (i = 0; i < TOI_MAX_ADVANCES; ++i)
     {
-      xform xa = toi_pose (world, k->a, a, ctx, t), xb = toi_pose (world, k->b, b, ctx, t);
-      double d = v2_len (v2_sub (xb.p, xa.p)) + lin * (t_max - t), tn, sn;
-      double ab = wb * reach_b + wa * (d + reach_b), ba = wa * reach_a + wb * (d + reach_a);
-      double mu = lin + (axis == CONTACT_AXIS_A ? ab : axis == CONTACT_AXIS_B ? ba : wa * reach_a + wb * reach_b);
-      if (!(mu > 0.0))
-        return TOI_APART; /* neither moves */
-      tn = t + s / mu;
+      double tn = t + closing_time (s, n, v2_mad (v, t, g), g, turn), sn;
       if (!(tn < t_max))
         return TOI_APART; /* it cannot close the gap by then */
-      sn = separation_axis (&p, tn, &axis);
+      sn = separation_axis (&p, tn, &n);
       if (sn <= 0.0)
         return bracketed (&p, t, s, tn, sn);
       if (sn <= p.tol)
