@@ -104,6 +104,9 @@ static int32_t find_old (carom_world *world, int32_t a, int32_t b, int32_t pa, i
 
 typedef struct pair_context {
   double restitution, friction, slop, margin;
+  double near; /* the margin without continuous collision (below margin:
+                  the pair's is speculative, pieces_stay_apart) */
+  const step_context *ctx;
   double reuse_lin, reuse_ang; /* manifold reuse tolerance (0: never) */
   const convex_piece *pieces_a, *pieces_b; /* a pair with a compound: the
                                               pieces collide_pieces takes */
@@ -291,34 +294,6 @@ static void narrow_phase (const carom_world *world, int32_t a, int32_t b, int32_
     collide_polygons_sat (&sa->pieces[pa], xa, &sb->pieces[pb], xb, margin, m);
 }
 
-/* The narrow phase for one pair of pieces, or last step's points moved
- * (reuse_manifold), then the contact. */
-static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, const pair_context *pc,
-                         xform xa, xform xb, manifold *m, int can_reuse)
-{
-  contacts *c = &world->contacts;
-  int32_t old = find_old (world, a, b, pa, pb);
-  const contact *from = NULL;
-  if (can_reuse && old >= 0 && reuse_manifold (&c->old[old], xa, xb, pc->reuse_lin, pc->reuse_ang, m))
-    from = &c->old[old];
-  else
-    narrow_phase (world, a, b, pa, pb, pc->pieces_a, pc->pieces_b, xa, xb, pc->margin, m);
-  add_manifold (world, a, b, pa, pb, m, pc, old, from, xa, xb);
-}
-
-void contact_collide_at (const carom_world *world, const contact *k, xform xa, xform xb, double margin, manifold *m)
-{
-  const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
-  convex_piece ca, cb;
-  const convex_piece *P = NULL, *Q = NULL;
-  if (A->shape.kind == CAROM_SHAPE_COMPOUND || B->shape.kind == CAROM_SHAPE_COMPOUND)
-    {
-      body_pieces (A, &P, &ca);
-      body_pieces (B, &Q, &cb);
-    }
-  narrow_phase (world, k->a, k->b, k->piece_a, k->piece_b, P, Q, xa, xb, margin, m);
-}
-
 /* The largest of a cos(d) + b sin(d) over |d| <= turn (turn <= pi/2),
  * bounded from above: a if a >= 0 else a cos(turn), plus |b| sin(turn). */
 static double turned_bound (double a, double b, double c, double s)
@@ -357,6 +332,56 @@ static double piece_reach_along (const body *B, int32_t piece, rot2 q, vec2 d, d
       best = r > best ? r : best;
     }
   return best;
+}
+
+/* Whether a pair of pieces whose margin continuous collision widened cannot
+ * come within the margin without it (pc->near) in this step, along the
+ * normal n that the narrow phase found: their gap along n (the pieces'
+ * projections) less what the centres' approach along n, the turns the step
+ * can give the bodies (contact_reach_along's bound) and gravity can take
+ * from it. Such a pair's speculative contact would never act. */
+static int pieces_stay_apart (const carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, vec2 n,
+                              const pair_context *pc)
+{
+  const body *A = &world->bodies[a], *B = &world->bodies[b];
+  double dt = pc->ctx->dt;
+  double reach = piece_reach_along (A, pa, A->q, n, fabs (A->w) * dt)
+                 + piece_reach_along (B, pb, B->q, v2_neg (n), fabs (B->w) * dt);
+  double closing = -v2_dot (n, v2_sub (B->v, A->v));
+  double fall = pc->ctx->accel * dt * dt * ((A->inv_mass > 0.0) + (B->inv_mass > 0.0));
+  return v2_dot (n, v2_sub (B->p, A->p)) - reach - (closing > 0.0 ? closing * dt : 0.0) - fall > pc->near;
+}
+
+/* The narrow phase for one pair of pieces, or last step's points moved
+ * (reuse_manifold), then the contact. */
+static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, const pair_context *pc,
+                         xform xa, xform xb, manifold *m, int can_reuse)
+{
+  contacts *c = &world->contacts;
+  int32_t old = find_old (world, a, b, pa, pb);
+  const contact *from = NULL;
+  if (can_reuse && old >= 0 && reuse_manifold (&c->old[old], xa, xb, pc->reuse_lin, pc->reuse_ang, m))
+    from = &c->old[old];
+  else
+    {
+      narrow_phase (world, a, b, pa, pb, pc->pieces_a, pc->pieces_b, xa, xb, pc->margin, m);
+      if (m->count > 0 && pc->margin > pc->near && pieces_stay_apart (world, a, b, pa, pb, m->points[0].normal, pc))
+        m->count = 0;
+    }
+  add_manifold (world, a, b, pa, pb, m, pc, old, from, xa, xb);
+}
+
+void contact_collide_at (const carom_world *world, const contact *k, xform xa, xform xb, double margin, manifold *m)
+{
+  const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
+  convex_piece ca, cb;
+  const convex_piece *P = NULL, *Q = NULL;
+  if (A->shape.kind == CAROM_SHAPE_COMPOUND || B->shape.kind == CAROM_SHAPE_COMPOUND)
+    {
+      body_pieces (A, &P, &ca);
+      body_pieces (B, &Q, &cb);
+    }
+  narrow_phase (world, k->a, k->b, k->piece_a, k->piece_b, P, Q, xa, xb, margin, m);
 }
 
 double contact_reach_along (const carom_world *world, const contact *k, vec2 n, double turn_a, double turn_b)
@@ -495,10 +520,8 @@ static void sensor_pair (carom_world *world, int32_t a, int32_t b)
  * narrow phase, no contact and no time-of-impact search. The pairs the
  * capped margin would keep are all kept (their gap at the start is already
  * within it), so switching continuous collision on only adds contacts. */
-static int pair_stays_apart (const body *A, const body *B, double reach_a, double reach_b, double slop, double margin,
-                             const step_context *ctx)
+static int pair_stays_apart (const body *A, const body *B, double near, double margin, const step_context *ctx)
 {
-  double near = slop + body_reach_capped (A, reach_a, 0) + body_reach_capped (B, reach_b, 0);
   vec2 d, v;
   double vv, t, closest, fall;
   if (!(margin > near))
@@ -559,7 +582,9 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
    * are contacts now, so impacts are met before the bodies overlap */
   pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], ctx->continuous || B->bullet)
               + body_reach_capped (B, world->broad.reach[b], ctx->continuous || A->bullet);
-  if (pair_stays_apart (A, B, world->broad.reach[a], world->broad.reach[b], pc.slop, pc.margin, ctx))
+  pc.near = pc.slop + body_reach_capped (A, world->broad.reach[a], 0) + body_reach_capped (B, world->broad.reach[b], 0);
+  pc.ctx = ctx;
+  if (pair_stays_apart (A, B, pc.near, pc.margin, ctx))
     return;
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
