@@ -384,10 +384,127 @@ void contact_collide_at (const carom_world *world, const contact *k, xform xa, x
   narrow_phase (world, k->a, k->b, k->piece_a, k->piece_b, P, Q, xa, xb, margin, m);
 }
 
-double contact_reach_along (const carom_world *world, const contact *k, vec2 n, double turn_a, double turn_b)
+/* The first root tau >= 0 of g0 + g1 tau - curve tau^2 / 2 (g0 >= 0), in
+ * the form that does not cancel; INFINITY when it has none. */
+static double gap_root (double g0, double g1, double curve)
+{
+  double disc = g1 * g1 + 2.0 * curve * g0, den;
+  if (!(disc >= 0.0))
+    return INFINITY;
+  den = sqrt (disc) - g1;
+  return den > 0.0 ? 2.0 * g0 / den : INFINITY;
+}
+
+/* The points that stand for body X's piece (its vertices, or a circle's
+ * centre with *radius), in its body's frame: how many, and the array. */
+static int32_t piece_points (const body *X, int32_t piece, const vec2 **v, vec2 *one, double *radius)
+{
+  *radius = 0.0;
+  if (X->shape.kind == CAROM_SHAPE_CIRCLE)
+    {
+      *one = v2 (0.0, 0.0), *v = one, *radius = X->shape.radius;
+      return 1;
+    }
+  if (piece < 0)
+    {
+      *v = X->shape.vertices;
+      return X->shape.count;
+    }
+  if (X->shape.pieces[piece].count == 0)
+    {
+      *one = X->shape.pieces[piece].center, *v = one, *radius = X->shape.pieces[piece].radius;
+      return 1;
+    }
+  *v = X->shape.pieces[piece].vertices;
+  return X->shape.pieces[piece].count;
+}
+
+void contact_piece_envelope (const carom_world *world, const contact *k, int side, xform x, vec2 vel, double w, vec2 d,
+                             double *reach, double *rate)
+{
+  const body *X = &world->bodies[side ? k->b : k->a];
+  const vec2 *v;
+  vec2 one;
+  double radius;
+  int32_t i, n = piece_points (X, side ? k->piece_b : k->piece_a, &v, &one, &radius);
+  *reach = *rate = -INFINITY;
+  for (i = 0; i < n; ++i)
+    {
+      vec2 r = rot2_apply (x.q, v[i]);
+      double at = v2_dot (d, v2_add (x.p, r)) + radius, moving = v2_dot (d, v2_add (vel, v2_scale (v2_perp (r), w)));
+      *reach = at > *reach ? at : *reach;
+      *rate = moving > *rate ? moving : *rate;
+    }
+}
+
+double contact_piece_first_reach (const carom_world *world, const contact *k, int side, xform x, vec2 vel, double w,
+                                  vec2 d, double other, double other_rate, double curve)
+{
+  const body *X = &world->bodies[side ? k->b : k->a];
+  const vec2 *v;
+  vec2 one;
+  double radius, first = INFINITY;
+  int32_t i, n = piece_points (X, side ? k->piece_b : k->piece_a, &v, &one, &radius);
+  for (i = 0; i < n; ++i)
+    {
+      vec2 r = rot2_apply (x.q, v[i]);
+      /* the gap this point leaves, g0 + g1 tau - curve tau^2 / 2 at least:
+       * its first root, in the form that does not cancel */
+      double g0 = -(v2_dot (d, v2_add (x.p, r)) + radius) - other;
+      double g1 = -v2_dot (d, v2_add (vel, v2_scale (v2_perp (r), w))) - other_rate;
+      double tau = gap_root (g0, g1, curve);
+      first = tau < first ? tau : first;
+    }
+  return first;
+}
+
+/* A point of a piece along the direction d: its position d . q (its
+ * circle's radius added) and its rate d . q'. */
+typedef struct piece_track {
+  double at, rate;
+} piece_track;
+
+static piece_track track_point (vec2 local, double radius, xform x, vec2 vel, double w, vec2 d)
+{
+  vec2 r = rot2_apply (x.q, local);
+  piece_track t;
+  t.at = v2_dot (d, v2_add (x.p, r)) + radius;
+  t.rate = v2_dot (d, v2_add (vel, v2_scale (v2_perp (r), w)));
+  return t;
+}
+
+double contact_pieces_first_meeting (const carom_world *world, const contact *k, xform xa, vec2 va, double wa,
+                                     xform xb, vec2 vb, double wb, vec2 n, double curve)
 {
   const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
-  return piece_reach_along (A, k->piece_a, A->q, n, turn_a) + piece_reach_along (B, k->piece_b, B->q, v2_neg (n), turn_b);
+  const vec2 *pa, *pb;
+  vec2 one_a, one_b;
+  double ra, rb, first = INFINITY;
+  int32_t na = piece_points (A, k->piece_a, &pa, &one_a, &ra), nb = piece_points (B, k->piece_b, &pb, &one_b, &rb);
+  piece_track small[CONTACT_PAIRED_POINTS];
+  int32_t i, j, a_small = na <= nb, ns = a_small ? na : nb, nl = a_small ? nb : na;
+  if ((int64_t) na * nb > CONTACT_PAIRED_POINTS * CONTACT_PAIRED_POINTS || ns > CONTACT_PAIRED_POINTS)
+    return -1.0;
+  /* A's points along n (its extent towards B), B's along -n */
+  for (i = 0; i < ns; ++i)
+    small[i] = a_small ? track_point (pa[i], ra, xa, va, wa, n) : track_point (pb[i], rb, xb, vb, wb, v2_neg (n));
+  for (j = 0; j < nl; ++j)
+    {
+      piece_track l = a_small ? track_point (pb[j], rb, xb, vb, wb, v2_neg (n)) : track_point (pa[j], ra, xa, va, wa, n);
+      for (i = 0; i < ns; ++i)
+        {
+          double tau = gap_root (-(l.at + small[i].at), -(l.rate + small[i].rate), curve);
+          first = tau < first ? tau : first;
+        }
+    }
+  return first;
+}
+
+double contact_reach_along (const carom_world *world, const contact *k, rot2 qa, rot2 qb, vec2 n, double turn_a,
+                            double turn_b)
+{
+  const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
+  return piece_reach_along (A, k->piece_a, qa, n, turn_a) + piece_reach_along (B, k->piece_b, qb, v2_neg (n), turn_b);
 }
 
 double contact_separation_at (const carom_world *world, const contact *k, xform xa, xform xb, vec2 *axis)

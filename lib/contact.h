@@ -67,6 +67,9 @@ typedef struct contact {
   int32_t queued;             /* waiting in contact_impacts' work list */
   double impact_at;           /* when its impact happens in the step (a seed
                                  of contact_impacts) */
+  int32_t pending;            /* a seed contact_impacts has yet to take */
+  int32_t reimpacts;          /* times it was found to strike again */
+  int32_t event_round;        /* the last impact (seed) that acted on it */
   int32_t cold;               /* begins resting this step: fresh, near,
                                  neither closing nor leaving fast
                                  (contact_cold_start gives it an impulse) */
@@ -125,10 +128,31 @@ void contact_collide_at (const struct carom_world *world, const contact *k, xfor
                          manifold *m);
 /* How far contact k's two pieces reach towards each other along the unit
  * axis n (A's along n, B's along -n, each from its body's centre), their
- * bodies where they are now and turned by at most turn_a and turn_b either
+ * bodies turned to qa and qb and then by at most turn_a and turn_b either
  * way: with the centres' gap along n, a bound on the pieces' gap along n
  * through any such turn. */
-double contact_reach_along (const struct carom_world *world, const contact *k, vec2 n, double turn_a, double turn_b);
+double contact_reach_along (const struct carom_world *world, const contact *k, rot2 qa, rot2 qb, vec2 n, double turn_a,
+                            double turn_b);
+/* Contact k's piece of one body (side 0: A, 1: B) placed at x and moving
+ * at velocity vel and spin w: the largest d . q over its points q (a
+ * circle's radius included) and the largest rate d . q' of any of them. */
+void contact_piece_envelope (const struct carom_world *world, const contact *k, int side, xform x, vec2 vel, double w,
+                             vec2 d, double *reach, double *rate);
+/* The same piece: the earliest tau >= 0 at which the gap one of its points
+ * leaves to a level other + other_rate tau (which it must stay below along
+ * d), -(d . q + d . q' tau) - level, less curve tau^2 / 2, falls to 0;
+ * INFINITY when none does. */
+double contact_piece_first_reach (const struct carom_world *world, const contact *k, int side, xform x, vec2 vel,
+                                  double w, vec2 d, double other, double other_rate, double curve);
+/* Contact k's pieces placed at xa and xb and moving at (va, wa), (vb, wb):
+ * the earliest tau >= 0 at which some point of A and some point of B could
+ * meet along the fixed axis n (from A towards B), each pair's gap along n
+ * closing at the pair's rate now, less curve tau^2 / 2; INFINITY when none
+ * does, -1 when the pieces have too many points to pair up (more than
+ * CONTACT_PAIRED_POINTS on both, or their product beyond its square). */
+#define CONTACT_PAIRED_POINTS 16
+double contact_pieces_first_meeting (const struct carom_world *world, const contact *k, xform xa, vec2 va, double wa,
+                                     xform xb, vec2 vb, double wb, vec2 n, double curve);
 /* The separation of contact k's two pieces placed at xa and xb: the largest
  * over the edge normals for two polygons (polygons_separation), the
  * distance less the radius with a circle. Never more than their distance;

@@ -31,6 +31,8 @@
 #include "toi.h"
 #include "world.h"
 
+#include <string.h>
+
 /* Overlap is pushed out at most this fraction of the smaller body's radius
  * (its bounding circle's) per step, so a deep overlap resolves over several
  * steps instead of launching the bodies. The radius, not the thickness: a
@@ -55,8 +57,16 @@
  * most this many pairwise impacts per contact of the step: with e < 1 a
  * row rings on ever more softly, and the rest is left to the sub-steps. */
 #define IMPACT_MAX_EVENTS 64
-/* contact_point.in_impact of a point an impact bounced */
+/* contact_point.in_impact of a point an impact bounced, and of one that
+ * bounced before its contact struck again at another point (it takes no
+ * part in that impact) */
 #define IMPACT_BOUNCED 2
+#define IMPACT_DONE 3
+/* A contact an impact acted on is searched for a next touch within the step
+ * from this fraction of the step after it (its points are leaving: at the
+ * impact itself they still touch), at most this many times a step. */
+#define REIMPACT_DELAY 1e-9
+#define REIMPACT_MAX 8
 
 static double effective_mass (const solver_body *a, const solver_body *b, double ra_d, double rb_d)
 {
@@ -311,42 +321,26 @@ static void impact_guard_point (contact *k, contact_point *p, const body *ba, co
   p->in_impact = 0; /* it does not touch then */
 }
 
-/* An impact (impact_within_step) where its pieces first touch, each body in
- * free flight until then (toi.c): the points of the touch (within the slop
- * of it) take the place of the detected points of the same features, and
- * the deepest, if no feature matches, that of the detected point meeting
- * first (or of the first). The other detected points stay (impact_guard_point): they guard
- * the rest of the step (a body an impact sets spinning turns its other
- * corners towards the surface). When the pieces do not touch within the
- * step, the contact takes no impulse in it. */
-static void impact_points (carom_world *world, contact *k, const body *ba, const body *bb, solver_body *a,
-                           solver_body *b, const step_context *ctx)
+/* The points of contact k's touch at time t (toi.c), the bodies in free
+ * flight until then (shifted by `shifts`, or NULL): the points of the touch
+ * (within the slop of it) take the place of the detected points of the same
+ * features. The deepest, if no feature matches, takes the place of `first`
+ * (a slot index). When `guard`, the other detected points stay
+ * (impact_guard_point): they guard the rest of the step (a body an impact
+ * sets spinning turns its other corners towards the surface); else they are
+ * left as they are (an impact again, contact_impacts). Returns the slots
+ * taken, a bit each. */
+static uint32_t touch_points (carom_world *world, contact *k, const body *ba, const body *bb, solver_body *a,
+                              solver_body *b, const step_context *ctx, double t, const impact_shift *shifts,
+                              int32_t first, int guard)
 {
+  const impact_shift *sa = shifts ? &shifts[k->a] : NULL, *sh = shifts ? &shifts[k->b] : NULL;
+  xform xa = toi_pose (world, k->a, a, ctx, t, sa), xb = toi_pose (world, k->b, b, ctx, t, sh);
+  rot2 turn_a = rot2_from_angle (sa ? a->w * t + sa->a : a->w * t);
+  rot2 turn_b = rot2_from_angle (sh ? b->w * t + sh->a : b->w * t);
   manifold m;
-  double t = toi_first_touch (world, k, a, b, ctx, ctx->dt);
-  xform xa, xb;
-  rot2 turn_a, turn_b;
   uint32_t taken = 0u;
   int32_t i, j;
-  if (t == TOI_APART)
-    {
-      /* their free flight does not touch within the step: a point closing
-       * fast, its lever arm turning, only seemed to (the passes take its
-       * normal speed at the arm of the detection) */
-      for (j = 0; j < k->count; ++j)
-        {
-          contact_point *p = &k->points[j];
-          p->rn_a = p->rn_b = p->rt_a = p->rt_b = 0.0;
-          p->normal_mass = p->tangent_mass = 0.0;
-          p->normal_impulse = p->tangent_impulse = 0.0;
-          p->toi = -1.0;
-        }
-      return;
-    }
-  if (t < 0.0)
-    return;
-  xa = toi_pose (world, k->a, a, ctx, t);
-  xb = toi_pose (world, k->b, b, ctx, t);
   contact_collide_at (world, k, xa, xb, k->slop, &m);
   for (i = 1; i < m.count; ++i) /* deepest first */
     for (j = i; j > 0 && m.points[j].depth > m.points[j - 1].depth; --j)
@@ -355,8 +349,6 @@ static void impact_points (carom_world *world, contact *k, const body *ba, const
         m.points[j] = m.points[j - 1];
         m.points[j - 1] = q;
       }
-  turn_a = rot2_from_angle (a->w * t);
-  turn_b = rot2_from_angle (b->w * t);
   for (i = 0; i < m.count; ++i)
     {
       int32_t at = -1;
@@ -364,24 +356,61 @@ static void impact_points (carom_world *world, contact *k, const body *ba, const
         if (!(taken & (1u << j)) && k->points[j].feature == m.points[i].feature)
           at = j;
       if (at < 0 && i == 0)
-        {
-          /* the detected point meeting first, or, when none meets by
-           * itself (the touch is another corner, turned in), the first */
-          for (j = 0; j < k->count; ++j)
-            if (k->points[j].toi >= 0.0 && (at < 0 || k->points[j].toi < k->points[at].toi))
-              at = j;
-          if (at < 0)
-            at = 0;
-        }
+        at = first;
       if (at < 0)
         continue;
       taken |= 1u << at;
       impact_point (k, &k->points[at], &m.points[i], ba, bb, a, b, ctx, t, xa, xb, turn_a, turn_b);
     }
-  if (taken)
+  if (taken && guard)
     for (j = 0; j < k->count; ++j)
       if (!(taken & (1u << j)))
         impact_guard_point (k, &k->points[j], ba, bb, a, b, ctx, t, xa, xb, turn_a, turn_b);
+  return taken;
+}
+
+/* A contact whose pieces, in free flight, do not touch for the rest of the
+ * step takes no impulse in it: a point closing fast, its lever arm
+ * turning, only seemed to (the passes take its normal speed at the arm of
+ * the detection), or, after an impact, the sub-steps (which move the
+ * bodies at their final velocities from the start of the step) would see
+ * the pair meet where it does not. */
+static void impact_inert (contact *k)
+{
+  int32_t j;
+  for (j = 0; j < k->count; ++j)
+    {
+      contact_point *p = &k->points[j];
+      p->rn_a = p->rn_b = p->rt_a = p->rt_b = 0.0;
+      p->normal_mass = p->tangent_mass = 0.0;
+      p->normal_impulse = p->tangent_impulse = 0.0;
+    }
+  k->block = 0;
+}
+
+/* An impact (impact_within_step) where its pieces first touch, each body in
+ * free flight until then (toi.c): touch_points, the deepest taking the place
+ * of the detected point meeting first (or, when none meets by itself, the
+ * touch being another corner turned in, of the first). When the pieces do
+ * not touch within the step, the contact takes no impulse in it. */
+static void impact_points (carom_world *world, contact *k, const body *ba, const body *bb, solver_body *a,
+                           solver_body *b, const step_context *ctx)
+{
+  double t = toi_first_touch (world, k, a, b, ctx, 0.0, ctx->dt, NULL);
+  int32_t j, first = -1;
+  if (t == TOI_APART)
+    {
+      impact_inert (k);
+      for (j = 0; j < k->count; ++j)
+        k->points[j].toi = -1.0;
+      return;
+    }
+  if (t < 0.0)
+    return;
+  for (j = 0; j < k->count; ++j)
+    if (k->points[j].toi >= 0.0 && (first < 0 || k->points[j].toi < k->points[first].toi))
+      first = j;
+  touch_points (world, k, ba, bb, a, b, ctx, t, NULL, first < 0 ? 0 : first, 1);
 }
 
 void contact_prepare (carom_world *world, const step_context *ctx)
@@ -402,6 +431,8 @@ void contact_prepare (carom_world *world, const step_context *ctx)
       k->met = 0;
       k->queued = 0;
       k->impact_at = -1.0;
+      k->pending = k->reimpacts = 0;
+      k->event_round = -1;
       c->bouncy_count += k->restitution > 0.0;
       /* a body falls 0.5 g h^2 in a sub-step with nothing to hold it: more
        * than the slop, and one pass cannot keep it resting */
@@ -674,9 +705,9 @@ static double impact_threshold (const step_context *ctx, vec2 n)
 }
 
 /* An impact of the step: a bouncy contact (e > 0) that closes faster than
- * resting contact ever does (impact_threshold), touching now (it meets at
- * 0) or apart and meeting within the step (at its earliest point's time of
- * impact). */
+ * resting contact ever does (impact_threshold), touching now (within
+ * TOI_TOUCH: it meets at 0) or apart and meeting within the step (at its
+ * earliest point's time of impact). */
 static int impact_seed (const contact *k, const step_context *ctx, double *at)
 {
   int32_t j, seed = 0;
@@ -691,7 +722,7 @@ static int impact_seed (const contact *k, const step_context *ctx, double *at)
         continue;
       if (p->depth < 0.0 && p->toi >= 0.0 && p->toi < ctx->dt)
         when = p->toi;
-      else if (p->depth >= -k->slop)
+      else if (p->depth >= -TOI_TOUCH * k->slop)
         when = 0.0;
       else
         continue;
@@ -702,37 +733,59 @@ static int impact_seed (const contact *k, const step_context *ctx, double *at)
   return seed;
 }
 
-/* Whether an impact passes on through contact k: it touched at detection
- * (every point within the slop), or is an impact of the step itself. */
-static int impact_passes (const contact *k)
+/* Whether an impact at time t passes on through contact k: it is an
+ * impact of the step at that moment, or its pieces touch then (within
+ * TOI_TOUCH of it: at the start of the step some point, later in the
+ * bodies' flight since the impacts, impact_shift). A contact apart then is
+ * not passed: if its bodies now close on it within the step, that is an
+ * impact in turn at its own time (impact_again). */
+static int impact_passes (const carom_world *world, const contact *k, const step_context *ctx, double t)
 {
+  const solver_body *sb = world->solver_bodies;
+  double touch = TOI_TOUCH * k->slop;
   int32_t j;
-  if (k->impact_at >= 0.0)
+  vec2 axis;
+  if (k->impact_at == t)
     return 1;
+  if (t > 0.0)
+    return k->count > 0
+           && contact_separation_at (world, k, toi_pose (world, k->a, &sb[k->a], ctx, t, &world->impact_shifts[k->a]),
+                                     toi_pose (world, k->b, &sb[k->b], ctx, t, &world->impact_shifts[k->b]), &axis)
+                  <= touch;
   for (j = 0; j < k->count; ++j)
-    if (k->points[j].depth < -k->slop)
-      return 0;
-  return k->count > 0;
+    if (k->points[j].depth >= -touch)
+      return 1;
+  return 0;
+}
+
+/* Whether a point takes part in its contact's impacts (contact_impacts). */
+static int takes_impact (const contact_point *p)
+{
+  return p->in_impact == 1 || p->in_impact == IMPACT_BOUNCED;
 }
 
 /* The pairwise impact of contact k at time t into the step, if it closes
- * there faster than `tol` beyond its impact_threshold: each point's normal speed then (the bodies'
- * velocities now, plus what gravity adds until t) leaves at minus e times
- * itself; eq. 3.23 for one point, both at once (the 2x2 problem) for two. Its impulses count
- * towards the step's totals and, times t, towards the move that puts the
- * bodies where an impulse at t leaves them (contact_time_of_impact); the
- * bounce is an event of its step and is not warm started. Returns whether
- * it acted. */
-static int impact_event (contact *k, solver_body *a, solver_body *b, const step_context *ctx, double t, double tol)
+ * there faster than `tol` beyond its impact_threshold: each point's normal
+ * speed then (the bodies' velocities now, plus what gravity adds until t)
+ * leaves at minus e times itself; eq. 3.23 for one point, both at once (the
+ * 2x2 problem) for two. Its impulses count towards the step's totals, and
+ * each body's velocity change times t towards its shift (impact_shift),
+ * the move that puts it where an impulse at t leaves it
+ * (contact_time_of_impact); the bounce is an event of its step and is not
+ * warm started. Returns whether it acted. */
+static int impact_event (contact *k, solver_body *a, solver_body *b, impact_shift *shifts, const step_context *ctx,
+                         double t, double tol)
 {
   double speed[MANIFOLD_MAX_POINTS], lambda[MANIFOLD_MAX_POINTS];
+  vec2 va = a->v, vb = b->v;
+  double wa = a->w, wb = b->w;
   int32_t j, closing = 0, taking = 0;
   for (j = 0; j < k->count; ++j)
     {
       contact_point *p = &k->points[j];
       lambda[j] = 0.0;
       speed[j] = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + relative_fall (a, b, p->normal, ctx) * t;
-      if (!p->in_impact || p->normal_mass == 0.0)
+      if (!takes_impact (p) || p->normal_mass == 0.0)
         continue;
       ++taking;
       closing |= speed[j] < -(tol + impact_threshold (ctx, p->normal));
@@ -756,7 +809,7 @@ static int impact_event (contact *k, solver_body *a, solver_body *b, const step_
         {
           contact_point *p = &k->points[j];
           double vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + relative_fall (a, b, p->normal, ctx) * t;
-          lambda[j] = p->in_impact && vn < 0.0 ? -(1.0 + k->restitution) * vn * p->normal_mass : 0.0;
+          lambda[j] = takes_impact (p) && vn < 0.0 ? -(1.0 + k->restitution) * vn * p->normal_mass : 0.0;
           contact_push (a, b, p->normal, p->rn_a, p->rn_b, lambda[j]);
         }
       for (j = 0; j < k->count; ++j)
@@ -771,10 +824,14 @@ static int impact_event (contact *k, solver_body *a, solver_body *b, const step_
       p->total_impulse += lambda[j];
       p->impact_moment += lambda[j] * t;
     }
+  shifts[k->a].p = v2_mad (shifts[k->a].p, -t, v2_sub (a->v, va));
+  shifts[k->a].a -= (a->w - wa) * t;
+  shifts[k->b].p = v2_mad (shifts[k->b].p, -t, v2_sub (b->v, vb));
+  shifts[k->b].a -= (b->w - wb) * t;
   /* the bounce is done: the end of the step does not bounce its points
    * again, nor does a sub-step's first push count as its meeting */
   for (j = 0; j < k->count; ++j)
-    if (k->points[j].in_impact && k->points[j].normal_mass > 0.0)
+    if (takes_impact (&k->points[j]) && k->points[j].normal_mass > 0.0)
       {
         k->points[j].approach = 0.0;
         k->points[j].in_impact = IMPACT_BOUNCED;
@@ -783,54 +840,131 @@ static int impact_event (contact *k, solver_body *a, solver_body *b, const step_
   return 1;
 }
 
+/* Contact k's next touch within the step after an impact at t changed its
+ * bodies' velocities (its own, or one passed on through its bodies): the
+ * time of impact from t in their flight since (impact_shift), from a moment
+ * after t when k itself just struck (its points leave; at t they still
+ * touch). A touch takes its points (touch_points: the deepest in a slot
+ * that has not bounced, if there is one; the bounced points of the other
+ * slots take no part in it) and makes k a seed at that time; no touch
+ * takes k's seed back, if it had one. Returns the time, or a negative. */
+static double impact_again (carom_world *world, contact *k, const step_context *ctx, double t, int struck)
+{
+  const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
+  solver_body *a = &world->solver_bodies[k->a], *b = &world->solver_bodies[k->b];
+  double from = struck ? t + REIMPACT_DELAY * ctx->dt : t, at;
+  uint32_t taken;
+  int32_t j, first = 0;
+  if (k->restitution == 0.0 || k->reimpacts >= REIMPACT_MAX || k->count == 0
+      || (k->piece_a < 0 && k->piece_b < 0 && ba->shape.kind == CAROM_SHAPE_POLYGON))
+    return -1.0;
+  /* struck at the start while overlapping: still overlapping after it */
+  for (j = 0; j < k->count && struck && t == 0.0; ++j)
+    if (k->points[j].depth > 0.0)
+      return TOI_UNKNOWN;
+  at = toi_first_touch (world, k, a, b, ctx, from, ctx->dt, world->impact_shifts);
+  if (at < 0.0)
+    return at;
+  for (j = k->count - 1; j >= 0; --j)
+    if (k->points[j].in_impact != IMPACT_BOUNCED && k->points[j].in_impact != IMPACT_DONE)
+      first = j;
+  taken = touch_points (world, k, ba, bb, a, b, ctx, at, world->impact_shifts, first, 0);
+  if (!taken)
+    return -1.0;
+  for (j = 0; j < k->count; ++j)
+    if (!(taken & (1u << j)))
+      k->points[j].in_impact = k->points[j].in_impact == IMPACT_BOUNCED ? IMPACT_DONE
+                               : k->points[j].in_impact == 1           ? 0
+                                                                        : k->points[j].in_impact;
+  pair_matrix (k, a, b);
+  k->reimpacts++;
+  return at;
+}
+
+/* Seed `i` at time at into the queue seeds[head..n), in time order (ties
+ * after those already there); the taken part before head is dropped when
+ * the room (cap) runs out. */
+static void seed_insert (contacts *c, int32_t *seeds, int32_t *head, int32_t *n, int32_t cap, int32_t i, double at)
+{
+  int32_t j;
+  if (*n == cap)
+    {
+      memmove (seeds, seeds + *head, (size_t) (*n - *head) * sizeof *seeds);
+      *n -= *head;
+      *head = 0;
+    }
+  for (j = (*n)++; j > *head && c->list[seeds[j - 1]].impact_at > at; --j)
+    seeds[j] = seeds[j - 1];
+  seeds[j] = i;
+  c->list[i].impact_at = at;
+  c->list[i].pending = 1;
+}
+
+static void seed_remove (contacts *c, int32_t *seeds, int32_t head, int32_t *n, int32_t i)
+{
+  int32_t j, o = head;
+  for (j = head; j < *n; ++j)
+    if (seeds[j] != i)
+      seeds[o++] = seeds[j];
+  *n = o;
+  c->list[i].pending = 0;
+}
+
 void contact_impacts (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
-  int32_t *seeds = world->restitution_list, *work = world->batch_scratch, *start = NULL, *adj = NULL;
-  int32_t i, j, n = 0, s;
+  impact_shift *shifts = world->impact_shifts;
+  int32_t *seeds = world->restitution_list, *work = world->batch_scratch, *events = world->impact_events;
+  int32_t *start = NULL, *adj = NULL;
+  int32_t i, j, n = 0, head = 0, round = 0;
   double fastest = 0.0, tol;
   c->impacts = 0;
   if (c->bouncy_count == 0)
     return;
+  for (i = 0; i <= world->slot_count; ++i)
+    shifts[i].p = v2 (0.0, 0.0), shifts[i].a = 0.0;
   for (i = 0; i < c->count; ++i)
     {
       contact *k = &c->list[i];
       double at;
       if (!impact_seed (k, ctx, &at))
         continue;
-      k->impact_at = at;
       for (j = 0; j < k->count; ++j)
         fastest = fmax (fastest, -k->points[j].approach);
       /* in the order they happen (insertion: ties keep list order) */
-      for (j = n++; j > 0 && c->list[seeds[j - 1]].impact_at > at; --j)
-        seeds[j] = seeds[j - 1];
-      seeds[j] = i;
+      seed_insert (c, seeds, &head, &n, c->count, i, at);
     }
   if (n == 0)
     return;
   tol = RESTITUTION_TOLERANCE * fastest;
   solver_contact_adjacency (world, &start, &adj);
-  for (s = 0; s < n; ++s)
+  while (head < n)
     {
       /* the impact, then the impacts it makes through the bodies it
        * touches, all at its moment, until nothing there closes (a work
        * list of contacts, each in it once at a time: a ring of c->count) */
-      double t = c->list[seeds[s]].impact_at;
-      int32_t head = 0, queued = 1, events = 0, limit = IMPACT_MAX_EVENTS * (c->count + 1);
-      work[0] = seeds[s];
-      c->list[seeds[s]].queued = 1;
-      while (queued > 0 && events < limit)
+      int32_t seed = seeds[head++];
+      double t = c->list[seed].impact_at;
+      int32_t ring = 0, queued = 1, tried = 0, limit = IMPACT_MAX_EVENTS * (c->count + 1), acted = 0, cand = 0;
+      c->list[seed].pending = 0;
+      ++round;
+      work[0] = seed;
+      c->list[seed].queued = 1;
+      while (queued > 0 && tried < limit)
         {
-          contact *k = &c->list[work[head]];
-          int32_t e, side;
-          head = (head + 1) % c->count;
+          contact *k = &c->list[work[ring]];
+          int32_t e, side, index = work[ring];
+          ring = (ring + 1) % c->count;
           --queued;
           k->queued = 0;
-          ++events;
-          if (!impact_event (k, &sb[k->a], &sb[k->b], ctx, t, tol))
+          ++tried;
+          if (!impact_event (k, &sb[k->a], &sb[k->b], shifts, ctx, t, tol))
             continue;
           ++c->impacts;
+          if (k->event_round != round)
+            events[acted++] = index;
+          k->event_round = round;
           for (side = 0; side < 2; ++side)
             {
               int32_t body = side ? k->b : k->a;
@@ -839,19 +973,51 @@ void contact_impacts (carom_world *world, const step_context *ctx)
               for (e = start[body]; e < start[body + 1]; ++e)
                 {
                   contact *o = &c->list[adj[e]];
-                  if (o->queued || !impact_passes (o))
+                  if (o->queued || !impact_passes (world, o, ctx, t))
                     continue;
                   o->queued = 1;
-                  work[(head + queued) % c->count] = adj[e];
+                  work[(ring + queued) % c->count] = adj[e];
                   ++queued;
                 }
             }
         }
       while (queued > 0) /* the limit cut it short */
         {
-          c->list[work[head]].queued = 0;
-          head = (head + 1) % c->count;
+          c->list[work[ring]].queued = 0;
+          ring = (ring + 1) % c->count;
           --queued;
+        }
+      /* what these impacts set moving may strike again within the step:
+       * the contacts they acted on and the bouncy contacts of their moving
+       * bodies (the work list, now free, holds them) */
+      for (i = 0; i < acted; ++i)
+        {
+          contact *k = &c->list[events[i]];
+          int32_t side, e;
+          if (!k->queued)
+            k->queued = 1, work[cand++] = events[i];
+          for (side = 0; side < 2; ++side)
+            {
+              int32_t body = side ? k->b : k->a;
+              if (sb[body].im == 0.0)
+                continue;
+              for (e = start[body]; e < start[body + 1]; ++e)
+                if (!c->list[adj[e]].queued && c->list[adj[e]].restitution > 0.0)
+                  c->list[adj[e]].queued = 1, work[cand++] = adj[e];
+            }
+        }
+      for (i = 0; i < cand; ++i)
+        {
+          contact *k = &c->list[work[i]];
+          double at;
+          k->queued = 0;
+          at = impact_again (world, k, ctx, t, k->event_round == round);
+          if (k->pending && (at >= 0.0 || at == TOI_APART))
+            seed_remove (c, seeds, head, &n, work[i]);
+          if (at >= 0.0)
+            seed_insert (c, seeds, &head, &n, c->count, work[i], at);
+          else if (at == TOI_APART)
+            impact_inert (k);
         }
     }
   /* what the end of the step bounces (contact_restitution) is measured on
@@ -863,7 +1029,7 @@ void contact_impacts (carom_world *world, const step_context *ctx)
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
-          if (p->in_impact != IMPACT_BOUNCED)
+          if (p->in_impact != IMPACT_BOUNCED && p->in_impact != IMPACT_DONE)
             p->approach = contact_speed (&sb[k->a], &sb[k->b], p->normal, p->rn_a, p->rn_b);
         }
     }
@@ -1002,29 +1168,26 @@ void contact_time_of_impact (carom_world *world, const step_context *ctx)
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
   int32_t i, j;
+  /* contact_impacts applied each impact at the start of the step, which
+   * moved the bodies by P dt / m by its end, where the event at t moves
+   * them P (dt - t) / m: the difference, P t / m, back (the shift, which
+   * sums it over the body's impacts) */
+  if (c->impacts > 0)
+    for (i = 0; i < world->slot_count; ++i)
+      {
+        sb[i].dp = v2_add (sb[i].dp, world->impact_shifts[i].p);
+        sb[i].da += world->impact_shifts[i].a;
+      }
   for (i = 0; i < c->count; ++i)
     {
       contact *k = &c->list[i];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
       for (j = 0; j < k->count && c->impacts > 0; ++j)
-        {
-          /* contact_impacts applied each impact at the start of the step,
-           * which moved the bodies by P dt / m by its end, where the event
-           * at t moves them P (dt - t) / m: the difference, P t / m, back */
-          const contact_point *p = &k->points[j];
-          double dn = p->impact_moment;
-          if (dn == 0.0)
-            continue;
-          a->dp = v2_mad (a->dp, a->im * dn, p->normal);
-          a->da += a->ii * p->rn_a * dn;
-          b->dp = v2_mad (b->dp, -b->im * dn, p->normal);
-          b->da -= b->ii * p->rn_b * dn;
-          if (p->toi >= 0.0)
-            {
-              impact_drift (a, ctx);
-              impact_drift (b, ctx);
-            }
-        }
+        if (k->points[j].impact_moment != 0.0 && k->points[j].toi >= 0.0)
+          {
+            impact_drift (a, ctx);
+            impact_drift (b, ctx);
+          }
       if (k->restitution == 0.0)
         continue; /* the approach stopped at the meeting: already exact */
       for (j = 0; j < k->count; ++j)

@@ -136,6 +136,10 @@ int solver_reserve (carom_world *world)
                          sizeof (double))
          && contact_shock_reserve (world) && joint_tree_reserve (world)
          && mem_reserve (&world->allocator, (void **) &world->restitution_list, &world->restitution_cap,
+                         world->contacts.count, sizeof (int32_t))
+         && mem_reserve (&world->allocator, (void **) &world->impact_shifts, &world->impact_shift_cap,
+                         world->slot_count + 1, sizeof (impact_shift))
+         && mem_reserve (&world->allocator, (void **) &world->impact_events, &world->impact_events_cap,
                          world->contacts.count, sizeof (int32_t));
 }
 
@@ -147,6 +151,11 @@ void solver_destroy (carom_world *world)
   world->cold_load = NULL;
   world->cold_load_cap = 0;
   mem_free (&world->allocator, world->restitution_list, (size_t) world->restitution_cap * sizeof (int32_t));
+  mem_free (&world->allocator, world->impact_shifts, (size_t) world->impact_shift_cap * sizeof (impact_shift));
+  mem_free (&world->allocator, world->impact_events, (size_t) world->impact_events_cap * sizeof (int32_t));
+  world->impact_shifts = NULL;
+  world->impact_events = NULL;
+  world->impact_shift_cap = world->impact_events_cap = 0;
   contact_shock_destroy (world);
   joint_tree_destroy (world);
   mem_free (&world->allocator, world->batches, (size_t) world->batch_cap * sizeof (contact_batch));

@@ -19,6 +19,18 @@ enum {
   MOVES_KINEMATIC = 2  /* at its own velocity, infinite mass */
 };
 
+/* How a body's free flight within the step stands after the impacts of
+ * contact_impacts changed its velocity at their times: those velocities
+ * act from the start of the step in the sub-steps, so the body's true path
+ * after its last impact is its start pose shifted by minus each velocity
+ * change times its time (p, and the angle a), plus its velocity now times
+ * the time (toi_pose). The shift is the move contact_time_of_impact makes
+ * at the end of the step. */
+typedef struct impact_shift {
+  vec2 p;
+  double a;
+} impact_shift;
+
 /* solver_body.constrained: some constraint acts on the body this step (it
  * moves by symplectic Euler, see gravity_drift_velocity); one of its
  * contacts held it at detection (touching, or apart but not closing); its

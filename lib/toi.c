@@ -19,8 +19,6 @@
 
 #include "world.h"
 
-/* Touching: a separation below this fraction of the pair's slop. */
-#define TOI_TOUCH 1e-12
 /* At most this many advancements, and this many regula falsi trials. */
 #define TOI_MAX_ADVANCES 128
 /* The secant's trials each advancement: its point, then twice, four and
@@ -32,17 +30,21 @@
  * search decides). */
 #define TOI_APART_CLEAR 1e-6
 
-xform toi_pose (const carom_world *world, int32_t i, const solver_body *sb, const step_context *ctx, double t)
+xform toi_pose (const carom_world *world, int32_t i, const solver_body *sb, const step_context *ctx, double t,
+                const impact_shift *shift)
 {
   const body *B = &world->bodies[i];
+  double turned = sb->w * t;
   xform x;
   x.p = v2_mad (B->p, t, sb->v);
+  if (shift)
+    x.p = v2_add (x.p, shift->p), turned += shift->a;
   if (sb->moves == MOVES_DYNAMIC)
     x.p = v2_mad (x.p, 0.5 * t * t, ctx->gravity);
   x.q = B->q;
-  if (t != 0.0 && sb->w != 0.0)
+  if (turned != 0.0)
     {
-      rot2 turn = rot2_from_angle (sb->w * t);
+      rot2 turn = rot2_from_angle (turned);
       x.q.c = B->q.c * turn.c - B->q.s * turn.s;
       x.q.s = B->q.s * turn.c + B->q.c * turn.s;
     }
@@ -54,13 +56,14 @@ typedef struct toi_pair {
   const contact *k;
   const solver_body *a, *b;
   const step_context *ctx;
+  const impact_shift *shift_a, *shift_b;
   double tol;
 } toi_pair;
 
 static double separation_axis (const toi_pair *p, double t, vec2 *axis)
 {
-  return contact_separation_at (p->world, p->k, toi_pose (p->world, p->k->a, p->a, p->ctx, t),
-                                toi_pose (p->world, p->k->b, p->b, p->ctx, t), axis);
+  return contact_separation_at (p->world, p->k, toi_pose (p->world, p->k->a, p->a, p->ctx, t, p->shift_a),
+                                toi_pose (p->world, p->k->b, p->b, p->ctx, t, p->shift_b), axis);
 }
 
 static double separation (const toi_pair *p, double t)
@@ -120,24 +123,23 @@ static double circles_meet (vec2 d, vec2 v, double reach, double t_max)
   return t <= t_max ? t : -1.0;
 }
 
-/* Whether the pieces stay apart along the fixed world axis n all through
- * [0, t_max]: their gap along n is at least the centres' gap along n less
- * how far the pieces reach along it through any turn the step can give
- * their bodies (contact_reach_along, |w| t_max each), and the centres' gap
- * is g0 + (n . v) t + (n . g) t^2 / 2 (v, g: B's velocity and gravity less
- * A's). Its least value over the step, clear of the touch by more than
+/* Whether the pieces stay apart along the fixed world axis n for a time
+ * `span` from poses xa, xb: their gap along n is at least the centres' gap
+ * along n less how far the pieces reach along it through any turn their
+ * bodies can take in that time (contact_reach_along, |w| span each), and
+ * the centres' gap grows as (n . v) t + (n . g) t^2 / 2 (v, g: B's velocity
+ * and gravity less A's). Its least value, clear of the touch by more than
  * rounding, is a verdict for the price of two projections: most pairs that
  * only the turning of their bodies might bring together end here. */
-static int fixed_axis_apart (const toi_pair *p, vec2 n, vec2 v, vec2 g, double t_max)
+static int fixed_axis_apart (const toi_pair *p, xform xa, xform xb, vec2 n, vec2 v, vec2 g, double span)
 {
-  const body *A = &p->world->bodies[p->k->a], *B = &p->world->bodies[p->k->b];
-  double reach = contact_reach_along (p->world, p->k, n, fabs (p->a->w) * t_max, fabs (p->b->w) * t_max);
-  double g0 = v2_dot (n, v2_sub (B->p, A->p)) - reach;
+  double reach = contact_reach_along (p->world, p->k, xa.q, xb.q, n, fabs (p->a->w) * span, fabs (p->b->w) * span);
+  double g0 = v2_dot (n, v2_sub (xb.p, xa.p)) - reach;
   double rate = v2_dot (n, v), curve = v2_dot (n, g);
-  double least = g0 + t_max * (rate + 0.5 * curve * t_max), t;
+  double least = g0 + span * (rate + 0.5 * curve * span), t;
   least = g0 < least ? g0 : least;
   t = curve > 0.0 ? -rate / curve : 0.0;
-  if (t > 0.0 && t < t_max)
+  if (t > 0.0 && t < span)
     {
       double at = g0 + t * (rate + 0.5 * curve * t);
       least = at < least ? at : least;
@@ -159,8 +161,37 @@ static double closing_time (double s, vec2 n, vec2 v, vec2 g, double turn)
   return c1 > 0.0 ? s / c1 : INFINITY;
 }
 
+/* How long after t the pieces cannot touch, from their points' motion at
+ * t along the fixed axis n (which their gap along n bounds from below):
+ * each point moves along n at its rate now, and no faster away from that
+ * than its acceleration allows, gravity plus w^2 times its body's reach.
+ * Pieces of few points are taken pair by pair (the first pair that could
+ * meet); else each point of one piece against how far the other piece can
+ * reach along n by then (its extent and fastest rate now, and the same
+ * bound), the later of the two pieces' first meetings. A second-order
+ * bound: a corner leaving after an impact, or passing by, does not hold the
+ * search back as the first-order one (closing_time) does. */
+static double reach_time (const toi_pair *p, double t, vec2 n, vec2 ga, vec2 gb)
+{
+  const body *A = &p->world->bodies[p->k->a], *B = &p->world->bodies[p->k->b];
+  xform xa = toi_pose (p->world, p->k->a, p->a, p->ctx, t, p->shift_a);
+  xform xb = toi_pose (p->world, p->k->b, p->b, p->ctx, t, p->shift_b);
+  vec2 va = v2_mad (p->a->v, t, ga), vb = v2_mad (p->b->v, t, gb);
+  double curve = p->a->w * p->a->w * A->shape.bound_radius + p->b->w * p->b->w * B->shape.bound_radius
+                 - v2_dot (n, v2_sub (gb, ga));
+  double ea, ra, eb, rb, tb, ta, paired = contact_pieces_first_meeting (p->world, p->k, xa, va, p->a->w, xb, vb,
+                                                                       p->b->w, n, curve);
+  if (paired >= 0.0)
+    return paired;
+  contact_piece_envelope (p->world, p->k, 0, xa, va, p->a->w, n, &ea, &ra);
+  contact_piece_envelope (p->world, p->k, 1, xb, vb, p->b->w, v2_neg (n), &eb, &rb);
+  tb = contact_piece_first_reach (p->world, p->k, 1, xb, vb, p->b->w, v2_neg (n), ea, ra, curve);
+  ta = contact_piece_first_reach (p->world, p->k, 0, xa, va, p->a->w, n, eb, rb, curve);
+  return ta > tb ? ta : tb;
+}
+
 double toi_first_touch (const carom_world *world, const contact *k, const solver_body *a, const solver_body *b,
-                        const step_context *ctx, double t_max)
+                        const step_context *ctx, double t_from, double t_max, const impact_shift *shifts)
 {
   const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
   toi_pair p;
@@ -169,33 +200,44 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
   vec2 v = v2_sub (b->v, a->v), g = v2_sub (gb, ga), n;
   double reach_a = A->shape.bound_radius, reach_b = B->shape.bound_radius;
   double turn = fabs (a->w) * reach_a + fabs (b->w) * reach_b;
-  double t = 0.0, s;
+  double t = t_from, s;
   int i;
   p.world = world, p.k = k, p.a = a, p.b = b, p.ctx = ctx;
+  p.shift_a = shifts ? &shifts[k->a] : NULL;
+  p.shift_b = shifts ? &shifts[k->b] : NULL;
   p.tol = TOI_TOUCH * k->slop;
-  s = separation_axis (&p, 0.0, &n);
-  if (!(s > p.tol) || !(t_max > 0.0))
+  if (!(t_max > t))
     return TOI_UNKNOWN;
-  if (fixed_axis_apart (&p, k->points[0].normal, v, g, t_max))
-    return TOI_APART;
-  /* The bodies' bounding circles hold every piece at any angle: no touch
-   * comes before they meet, none at all if they do not (what gravity can
-   * bend their centres' path by, at most |g| t_max^2 / 2, widens them). */
-  t = circles_meet (v2_sub (B->p, A->p), v, reach_a + reach_b + 0.5 * v2_len (g) * t_max * t_max, t_max);
-  if (t < 0.0)
-    return TOI_APART;
-  if (t > 0.0)
-    {
-      double s0 = s;
-      s = separation_axis (&p, t, &n);
-      if (s <= 0.0)
-        return bracketed (&p, 0.0, s0, t, s);
-      if (s <= p.tol)
-        return t;
-    }
+  {
+    /* From where the bodies are at t_from, moving at vt, two verdicts that
+     * cost less than a separation (neither calls pieces that touch now
+     * apart). The bodies' bounding circles hold every piece at any angle:
+     * no touch comes before they meet, none at all if they do not (what
+     * gravity can bend their centres' path by, at most |g| span^2 / 2,
+     * widens them). */
+    xform xa = toi_pose (world, k->a, a, ctx, t, p.shift_a), xb = toi_pose (world, k->b, b, ctx, t, p.shift_b);
+    vec2 vt = v2_mad (v, t, g);
+    double span = t_max - t, meet, s0, t0 = t;
+    meet = circles_meet (v2_sub (xb.p, xa.p), vt, reach_a + reach_b + 0.5 * v2_len (g) * span * span, span);
+    if (meet < 0.0 || fixed_axis_apart (&p, xa, xb, k->points[0].normal, vt, g, span))
+      return TOI_APART;
+    s = s0 = separation_axis (&p, t, &n);
+    if (!(s > p.tol))
+      return TOI_UNKNOWN;
+    if (meet > 0.0)
+      {
+        t += meet;
+        s = separation_axis (&p, t, &n);
+        if (s <= 0.0)
+          return bracketed (&p, t0, s0, t, s);
+        if (s <= p.tol)
+          return t;
+      }
+  }
   for (i = 0; i < TOI_MAX_ADVANCES; ++i)
     {
-      double tn = t + closing_time (s, n, v2_mad (v, t, g), g, turn), sn;
+      double first = closing_time (s, n, v2_mad (v, t, g), g, turn), second = reach_time (&p, t, n, ga, gb), sn;
+      double tn = t + (second > first ? second : first);
       if (!(tn < t_max))
         return TOI_APART; /* it cannot close the gap by then */
       sn = separation_axis (&p, tn, &n);

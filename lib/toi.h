@@ -13,18 +13,26 @@ struct carom_world;
 
 /* Where body slot `i` (solver body sb) is at time t into the step in free
  * flight: p + v t + g t^2 / 2 (g: gravity, for a dynamic body) and its
- * angle turned by w t. At t = 0, exactly its pose. */
-xform toi_pose (const struct carom_world *world, int32_t i, const solver_body *sb, const step_context *ctx, double t);
+ * angle turned by w t; with `shift` (or NULL), the flight after the
+ * impacts that shifted it (impact_shift). At t = 0 with no shift, exactly
+ * its pose. */
+xform toi_pose (const struct carom_world *world, int32_t i, const solver_body *sb, const step_context *ctx, double t,
+                const impact_shift *shift);
 
-/* The first time in (0, t_max] at which contact k's pieces touch in free
- * flight (their separation, contact_separation_at, falls to 0); TOI_APART
- * when they stay apart until t_max; TOI_UNKNOWN when they already touch at
- * 0, or the advancement ran out of trials. Conservative advancement keeps
- * every trial at or before the first touch; once a trial overlaps, the
- * touch is bracketed and found by regula falsi. */
+/* The first time in (t_from, t_max] at which contact k's pieces touch in
+ * free flight (their separation, contact_separation_at, falls to 0), the
+ * bodies shifted by shifts[slot] when shifts is not NULL; TOI_APART when
+ * they stay apart until t_max; TOI_UNKNOWN when they already touch at
+ * t_from, or the advancement ran out of trials. Conservative advancement
+ * keeps every trial at or before the first touch; once a trial overlaps,
+ * the touch is bracketed and found by regula falsi. */
+/* Touching: a separation below this fraction of the pair's slop (near the
+ * rounding of the coordinates). */
+#define TOI_TOUCH 1e-12
 #define TOI_APART (-1.0)
 #define TOI_UNKNOWN (-2.0)
 double toi_first_touch (const struct carom_world *world, const contact *k, const solver_body *a,
-                        const solver_body *b, const step_context *ctx, double t_max);
+                        const solver_body *b, const step_context *ctx, double t_from, double t_max,
+                        const impact_shift *shifts);
 
 #endif

@@ -36,6 +36,11 @@ struct carom_world {
   int32_t shock_cap;
   int32_t *restitution_list;         /* the struck contacts of a step */
   int32_t restitution_cap;
+  struct impact_shift *impact_shifts; /* per slot, and the contacts an
+                                         impact acted on (contact_impacts) */
+  int32_t impact_shift_cap;
+  int32_t *impact_events;
+  int32_t impact_events_cap;
   struct contact_batch *batches;     /* the coloured contacts, four a batch (contact_batch.c) */
   int32_t batch_count, batch_cap;
   uint32_t *colour_used;             /* per slot: the colours its constraints took */
