@@ -104,9 +104,6 @@ static int32_t find_old (carom_world *world, int32_t a, int32_t b, int32_t pa, i
 
 typedef struct pair_context {
   double restitution, friction, slop, margin;
-  double near; /* the margin without continuous collision (below margin:
-                  the pair's is speculative, pieces_stay_apart) */
-  const step_context *ctx;
   double reuse_lin, reuse_ang; /* manifold reuse tolerance (0: never) */
   const convex_piece *pieces_a, *pieces_b; /* a pair with a compound: the
                                               pieces collide_pieces takes */
@@ -334,24 +331,6 @@ static double piece_reach_along (const body *B, int32_t piece, rot2 q, vec2 d, d
   return best;
 }
 
-/* Whether a pair of pieces whose margin continuous collision widened cannot
- * come within the margin without it (pc->near) in this step, along the
- * normal n that the narrow phase found: their gap along n (the pieces'
- * projections) less what the centres' approach along n, the turns the step
- * can give the bodies (contact_reach_along's bound) and gravity can take
- * from it. Such a pair's speculative contact would never act. */
-static int pieces_stay_apart (const carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, vec2 n,
-                              const pair_context *pc)
-{
-  const body *A = &world->bodies[a], *B = &world->bodies[b];
-  double dt = pc->ctx->dt;
-  double reach = piece_reach_along (A, pa, A->q, n, fabs (A->w) * dt)
-                 + piece_reach_along (B, pb, B->q, v2_neg (n), fabs (B->w) * dt);
-  double closing = -v2_dot (n, v2_sub (B->v, A->v));
-  double fall = pc->ctx->accel * dt * dt * ((A->inv_mass > 0.0) + (B->inv_mass > 0.0));
-  return v2_dot (n, v2_sub (B->p, A->p)) - reach - (closing > 0.0 ? closing * dt : 0.0) - fall > pc->near;
-}
-
 /* The narrow phase for one pair of pieces, or last step's points moved
  * (reuse_manifold), then the contact. */
 static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, const pair_context *pc,
@@ -363,11 +342,7 @@ static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, i
   if (can_reuse && old >= 0 && reuse_manifold (&c->old[old], xa, xb, pc->reuse_lin, pc->reuse_ang, m))
     from = &c->old[old];
   else
-    {
-      narrow_phase (world, a, b, pa, pb, pc->pieces_a, pc->pieces_b, xa, xb, pc->margin, m);
-      if (m->count > 0 && pc->margin > pc->near && pieces_stay_apart (world, a, b, pa, pb, m->points[0].normal, pc))
-        m->count = 0;
-    }
+    narrow_phase (world, a, b, pa, pb, pc->pieces_a, pc->pieces_b, xa, xb, pc->margin, m);
   add_manifold (world, a, b, pa, pb, m, pc, old, from, xa, xb);
 }
 
@@ -627,33 +602,6 @@ static void sensor_pair (carom_world *world, int32_t a, int32_t b)
   c->sensor_count++;
 }
 
-/* Whether a pair whose margin continuous collision widened (pc.margin
- * beyond what the capped reaches give) cannot come within the capped margin
- * in this step: the bodies' bounding circles, which hold every piece at any
- * angle, are followed along the relative motion of their centres, exactly
- * for the velocities (the closest approach within [0, dt]) and with what
- * gravity can add bounded as in body_reach. Such a pair has nothing to meet:
- * a pair passing by, moving apart, or too far to close its gap takes no
- * narrow phase, no contact and no time-of-impact search. The pairs the
- * capped margin would keep are all kept (their gap at the start is already
- * within it), so switching continuous collision on only adds contacts. */
-static int pair_stays_apart (const body *A, const body *B, double near, double margin, const step_context *ctx)
-{
-  vec2 d, v;
-  double vv, t, closest, fall;
-  if (!(margin > near))
-    return 0;
-  d = v2_sub (B->p, A->p);
-  v = v2_sub (B->v, A->v);
-  vv = v2_dot (v, v);
-  /* the time within [0, dt] at which |d + v t| is least */
-  t = vv > 0.0 ? -v2_dot (d, v) / vv : 0.0;
-  t = t < 0.0 ? 0.0 : t > ctx->dt ? ctx->dt : t;
-  closest = v2_len (v2_mad (d, t, v));
-  fall = ctx->accel * ctx->dt * ctx->dt * ((A->inv_mass > 0.0) + (B->inv_mass > 0.0));
-  return closest - A->shape.bound_radius - B->shape.bound_radius - fall > near;
-}
-
 /* A body the sub-steps can move, or one that moves on its own. */
 static int can_move (const body *b)
 {
@@ -699,10 +647,6 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
    * are contacts now, so impacts are met before the bodies overlap */
   pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], ctx->continuous || B->bullet)
               + body_reach_capped (B, world->broad.reach[b], ctx->continuous || A->bullet);
-  pc.near = pc.slop + body_reach_capped (A, world->broad.reach[a], 0) + body_reach_capped (B, world->broad.reach[b], 0);
-  pc.ctx = ctx;
-  if (pair_stays_apart (A, B, pc.near, pc.margin, ctx))
-    return;
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   pc.pieces_a = pc.pieces_b = NULL;
