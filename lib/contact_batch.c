@@ -171,9 +171,6 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
   for (i = 0; i < c->count; ++i)
     if (!c->list[i].batched)
       colour[c->rest_count++] = i;
-#ifdef BATCH_DEBUG
-  { static int q; if (++q % 100 == 0) { int nb = 0, used_l = 0; for (i = 0; i < c->count; ++i) nb += c->list[i].batched; for (i = 0; i < n; ++i) for (k = 0; k < 4; ++k) used_l += world->batches[i].contact[k] >= 0; fprintf (stderr, "contacts %d batched %d batches %d lanes %d\n", c->count, nb, n, used_l);} }
-#endif
 }
 
 void contact_batch_store (carom_world *world)
