@@ -106,9 +106,9 @@ static double bracketed (const toi_pair *p, double lo, double slo, double hi, do
 }
 
 /* The first time within [0, t_max] at which two circles of radii summing to
- * `reach`, centres d apart and moving apart at v (relative), meet, or -1
- * if they do not: |d + v t| = reach, the smaller root (in the form that
- * does not cancel). */
+ * `reach`, centres d apart (B's less A's) and moving at v (B's velocity
+ * less A's), meet, or -1 if they do not: |d + v t| = reach, the smaller
+ * root (in the form that does not cancel). */
 static double circles_meet (vec2 d, vec2 v, double reach, double t_max)
 {
   double c = v2_dot (d, d) - reach * reach, dv = v2_dot (d, v), vv = v2_dot (v, v), disc, t;

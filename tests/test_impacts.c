@@ -465,6 +465,37 @@ static void row_sequential (const double *m, double *v, int n, double e)
         }
 }
 
+/* A row of n balls of radius r on the x axis (on a frictionless floor under
+ * gravity when grav; restitution e; continuous collision cont), the first
+ * first_gap from the second and moving at v0 along the row, the others gap
+ * apart and at rest: the world, and each ball's id, mass, position and
+ * velocity. */
+static carom_world *row_world (double e, int grav, int cont, int n, double r, double v0, const double *density,
+                               double gap, double first_gap, carom_body_id *ids, double *m, double *x, double *v)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  int i;
+  carom_world_def_init (&def, sizeof def);
+  def.restitution = e;
+  def.gravity_y = grav ? -G : 0.0;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  assert_status (carom_world_set_continuous (w, cont), CAROM_OK);
+  if (grav)
+    add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 20.0, 1.0);
+  for (i = 0; i < n; ++i)
+    {
+      carom_body_def d;
+      carom_body_def_init (&d, sizeof d);
+      d.x = i == 0 ? 0.0 : 2.0 * r + first_gap + (2.0 * r + gap) * (i - 1), d.y = r;
+      d.density = density[i], d.vx = i == 0 ? v0 : 0.0;
+      assert_status (carom_world_add_circle (w, &d, r, &ids[i]), CAROM_OK);
+      m[i] = d.density * M_PI * r * r;
+      x[i] = d.x, v[i] = d.vx;
+    }
+  return w;
+}
+
 /* Rows of touching balls (radius 0.1) struck at one end at 1 m/s by their
  * first ball, touching the next: 3 and 5 equal balls with e = 1 (the last
  * leaves with the striker's speed, the others stay at rest), unequal masses
@@ -486,27 +517,10 @@ static void test_newtons_cradle_is_sequential (void **state)
     for (grav = 0; grav < 2; ++grav)
       for (cont = 0; cont < 2; ++cont)
         {
-          carom_world *w = NULL;
-          carom_world_def def;
           carom_body_id ids[5];
-          double m[5], want[5], err = 0.0;
+          double m[5], x[5], want[5], err = 0.0;
           int i, n = counts[c];
-          carom_world_def_init (&def, sizeof def);
-          def.restitution = es[c];
-          def.gravity_y = grav ? -G : 0.0;
-          assert_status (carom_world_init (&w, &def), CAROM_OK);
-          assert_status (carom_world_set_continuous (w, cont), CAROM_OK);
-          if (grav)
-            add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 20.0, 1.0);
-          for (i = 0; i < n; ++i)
-            {
-              carom_body_def d;
-              carom_body_def_init (&d, sizeof d);
-              d.x = 2.0 * r * i, d.y = r, d.density = densities[c][i], d.vx = i == 0 ? v0 : 0.0;
-              assert_status (carom_world_add_circle (w, &d, r, &ids[i]), CAROM_OK);
-              m[i] = d.density * M_PI * r * r;
-              want[i] = d.vx;
-            }
+          carom_world *w = row_world (es[c], grav, cont, n, r, v0, densities[c], 0.0, 0.0, ids, m, x, want);
           row_sequential (m, want, n, es[c]);
           assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
           for (i = 0; i < n; ++i)
@@ -661,28 +675,11 @@ static void test_rows_with_gaps_are_impacts_in_turn (void **state)
       for (grav = 0; grav < 2; ++grav)
         for (cont = 0; cont < 2; ++cont)
           {
-            carom_world *w = NULL;
-            carom_world_def def;
             carom_body_id ids[5];
             double m[5], x[5], v[5], err = 0.0;
             int i, n = counts[c], step;
-            carom_world_def_init (&def, sizeof def);
-            def.restitution = es[c];
-            def.gravity_y = grav ? -G : 0.0;
-            assert_status (carom_world_init (&w, &def), CAROM_OK);
-            assert_status (carom_world_set_continuous (w, cont), CAROM_OK);
-            if (grav)
-              add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 20.0, 1.0);
-            for (i = 0; i < n; ++i)
-              {
-                carom_body_def d;
-                carom_body_def_init (&d, sizeof d);
-                d.x = (2.0 * r + gaps[gi % 3]) * i + (gi >= 3 && i == 0 ? gaps[gi % 3] : 0.0), d.y = r;
-                d.density = densities[c][i], d.vx = i == 0 ? v0 : 0.0;
-                assert_status (carom_world_add_circle (w, &d, r, &ids[i]), CAROM_OK);
-                m[i] = d.density * M_PI * r * r;
-                x[i] = d.x, v[i] = d.vx;
-              }
+            carom_world *w = row_world (es[c], grav, cont, n, r, v0, densities[c], gaps[gi % 3],
+                                        gi >= 3 ? 0.0 : gaps[gi % 3], ids, m, x, v);
             row_events (m, x, v, n, r, es[c], 4.0 * dt);
             for (step = 0; step < 4; ++step)
               assert_status (carom_world_update (w, dt), CAROM_OK);
