@@ -68,8 +68,10 @@ typedef struct contact {
   double impact_at;           /* when its impact happens in the step (a seed
                                  of contact_impacts) */
   int32_t pending;            /* a seed contact_impacts has yet to take */
-  int32_t reimpacts;          /* times it was found to strike again */
+  int32_t reimpacts;          /* times it was searched for a next touch */
   int32_t event_round;        /* the last impact (seed) that acted on it */
+  double touch_at;            /* the moment `touches` was found for */
+  int32_t touches;            /* whether its pieces touch then (contact_impacts) */
   int32_t cold;               /* begins resting this step: fresh, near,
                                  neither closing nor leaving fast
                                  (contact_cold_start gives it an impulse) */

@@ -67,6 +67,9 @@
  * impact itself they still touch), at most this many times a step. */
 #define REIMPACT_DELAY 1e-9
 #define REIMPACT_MAX 8
+/* Only for contacts whose moving bodies touched at most this many other
+ * moving bodies each at detection (sparse). */
+#define REIMPACT_DEGREE 2
 
 static double effective_mass (const solver_body *a, const solver_body *b, double ra_d, double rb_d)
 {
@@ -433,6 +436,7 @@ void contact_prepare (carom_world *world, const step_context *ctx)
       k->impact_at = -1.0;
       k->pending = k->reimpacts = 0;
       k->event_round = -1;
+      k->touch_at = -1.0;
       c->bouncy_count += k->restitution > 0.0;
       /* a body falls 0.5 g h^2 in a sub-step with nothing to hold it: more
        * than the slop, and one pass cannot keep it resting */
@@ -739,7 +743,7 @@ static int impact_seed (const contact *k, const step_context *ctx, double *at)
  * bodies' flight since the impacts, impact_shift). A contact apart then is
  * not passed: if its bodies now close on it within the step, that is an
  * impact in turn at its own time (impact_again). */
-static int impact_passes (const carom_world *world, const contact *k, const step_context *ctx, double t)
+static int impact_passes (const carom_world *world, contact *k, const step_context *ctx, double t)
 {
   const solver_body *sb = world->solver_bodies;
   double touch = TOI_TOUCH * k->slop;
@@ -748,10 +752,21 @@ static int impact_passes (const carom_world *world, const contact *k, const step
   if (k->impact_at == t)
     return 1;
   if (t > 0.0)
-    return k->count > 0
-           && contact_separation_at (world, k, toi_pose (world, k->a, &sb[k->a], ctx, t, &world->impact_shifts[k->a]),
-                                     toi_pose (world, k->b, &sb[k->b], ctx, t, &world->impact_shifts[k->b]), &axis)
-                  <= touch;
+    {
+      /* where the bodies are at t does not change with the impacts at t:
+       * once found for a moment, it holds for the rest of it */
+      if (k->touch_at != t)
+        {
+          k->touch_at = t;
+          k->touches = k->count > 0
+                       && contact_separation_at (world, k,
+                                                 toi_pose (world, k->a, &sb[k->a], ctx, t, &world->impact_shifts[k->a]),
+                                                 toi_pose (world, k->b, &sb[k->b], ctx, t, &world->impact_shifts[k->b]),
+                                                 &axis)
+                              <= touch;
+        }
+      return k->touches;
+    }
   for (j = 0; j < k->count; ++j)
     if (k->points[j].depth >= -touch)
       return 1;
@@ -862,6 +877,7 @@ static double impact_again (carom_world *world, contact *k, const step_context *
   for (j = 0; j < k->count && struck && t == 0.0; ++j)
     if (k->points[j].depth > 0.0)
       return TOI_UNKNOWN;
+  k->reimpacts++;
   at = toi_first_touch (world, k, a, b, ctx, from, ctx->dt, world->impact_shifts);
   if (at < 0.0)
     return at;
@@ -877,8 +893,41 @@ static double impact_again (carom_world *world, contact *k, const step_context *
                                : k->points[j].in_impact == 1           ? 0
                                                                         : k->points[j].in_impact;
   pair_matrix (k, a, b);
-  k->reimpacts++;
   return at;
+}
+
+/* How many other moving bodies body i touched at detection (a contact with
+ * some point within its slop). */
+static int32_t touching_contacts (const contacts *c, const solver_body *sb, int32_t i, const int32_t *start,
+                                  const int32_t *adj)
+{
+  int32_t e, j, n = 0;
+  for (e = start[i]; e < start[i + 1]; ++e)
+    {
+      const contact *o = &c->list[adj[e]];
+      if (sb[o->a].im == 0.0 || sb[o->b].im == 0.0)
+        continue;
+      for (j = 0; j < o->count; ++j)
+        if (o->points[j].depth >= -o->slop)
+          {
+            ++n;
+            break;
+          }
+    }
+  return n;
+}
+
+/* Whether neither moving body of contact k touched more than
+ * REIMPACT_DEGREE other moving bodies at detection: impacts in turn are
+ * looked for where bodies meet one or two others at a time (a row, a gas,
+ * a body and a wall or floor); within a packed cluster, where every impact
+ * would send all its neighbours searching, they are left to the
+ * sub-steps. */
+static int sparse (const contacts *c, const contact *k, const solver_body *sb, const int32_t *start,
+                   const int32_t *adj)
+{
+  return (sb[k->a].im == 0.0 || touching_contacts (c, sb, k->a, start, adj) <= REIMPACT_DEGREE)
+         && (sb[k->b].im == 0.0 || touching_contacts (c, sb, k->b, start, adj) <= REIMPACT_DEGREE);
 }
 
 /* Seed `i` at time at into the queue seeds[head..n), in time order (ties
@@ -994,7 +1043,7 @@ void contact_impacts (carom_world *world, const step_context *ctx)
         {
           contact *k = &c->list[events[i]];
           int32_t side, e;
-          if (!k->queued)
+          if (!k->queued && sparse (c, k, sb, start, adj))
             k->queued = 1, work[cand++] = events[i];
           for (side = 0; side < 2; ++side)
             {
@@ -1002,7 +1051,8 @@ void contact_impacts (carom_world *world, const step_context *ctx)
               if (sb[body].im == 0.0)
                 continue;
               for (e = start[body]; e < start[body + 1]; ++e)
-                if (!c->list[adj[e]].queued && c->list[adj[e]].restitution > 0.0)
+                if (!c->list[adj[e]].queued && c->list[adj[e]].restitution > 0.0
+                    && sparse (c, &c->list[adj[e]], sb, start, adj))
                   c->list[adj[e]].queued = 1, work[cand++] = adj[e];
             }
         }

@@ -200,7 +200,7 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
   vec2 v = v2_sub (b->v, a->v), g = v2_sub (gb, ga), n;
   double reach_a = A->shape.bound_radius, reach_b = B->shape.bound_radius;
   double turn = fabs (a->w) * reach_a + fabs (b->w) * reach_b;
-  double t = t_from, s;
+  double t = t_from, s = 0.0;
   int i;
   p.world = world, p.k = k, p.a = a, p.b = b, p.ctx = ctx;
   p.shift_a = shifts ? &shifts[k->a] : NULL;
@@ -217,12 +217,15 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
      * widens them). */
     xform xa = toi_pose (world, k->a, a, ctx, t, p.shift_a), xb = toi_pose (world, k->b, b, ctx, t, p.shift_b);
     vec2 vt = v2_mad (v, t, g);
-    double span = t_max - t, meet, s0, t0 = t;
+    double span = t_max - t, meet, s0 = 0.0, t0 = t;
+    /* a search again after an impact (t_from > 0) most often finds the
+     * pieces still touching: that first */
+    if (t_from > 0.0 && !((s = s0 = separation_axis (&p, t, &n)) > p.tol))
+      return TOI_UNKNOWN;
     meet = circles_meet (v2_sub (xb.p, xa.p), vt, reach_a + reach_b + 0.5 * v2_len (g) * span * span, span);
     if (meet < 0.0 || fixed_axis_apart (&p, xa, xb, k->points[0].normal, vt, g, span))
       return TOI_APART;
-    s = s0 = separation_axis (&p, t, &n);
-    if (!(s > p.tol))
+    if (t_from == 0.0 && !((s = s0 = separation_axis (&p, t, &n)) > p.tol))
       return TOI_UNKNOWN;
     if (meet > 0.0)
       {
