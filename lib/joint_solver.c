@@ -698,6 +698,15 @@ static void impulse_on_b (const joint *j, const solver_body *A, const solver_bod
     }
 }
 
+/* Drop what a joint has accumulated: its warm start would leave a body
+ * beyond what a joint may act on (joint_sane), so it starts from none. */
+static void joint_forget_impulses (joint *j)
+{
+  j->linear_impulse = v2 (0.0, 0.0);
+  j->angular_impulse = j->axial_impulse = 0.0;
+  j->motor_impulse = j->lower_impulse = j->upper_impulse = 0.0;
+}
+
 void joint_warm_start (carom_world *world)
 {
   joints *js = &world->joints;
@@ -706,31 +715,41 @@ void joint_warm_start (carom_world *world)
   for (i = 0; i < js->count; ++i)
     {
       joint *j = &js->list[i];
-      solver_body *A, *B;
+      solver_body *SA, *SB, a, b, *A = &a, *B = &b;
       vec2 p, ra, rb;
       double l;
       if (!j->alive)
         continue;
-      A = body_a (world, j);
-      B = body_b (world, j);
+      SA = body_a (world, j);
+      SB = body_b (world, j);
+      /* on copies, kept only if the bodies stay sane, as in each pass (a
+       * prismatic axis's arm reaches b's anchor, which a fall under
+       * gravity of CAROM_MAX_MAGNITUDE carries across the doubles) */
+      a = *SA, b = *SB;
       impulse_on_b (j, A, B, &p, &l);
       rb = rot2_apply (B->dq, j->rb);
       if (j->type == CAROM_JOINT_MOUSE)
         {
           B->v = v2_mad (B->v, B->im, p);
           B->w += B->ii * v2_cross (rb, p);
-          continue;
         }
-      ra = rot2_apply (A->dq, j->ra);
-      if (j->type == CAROM_JOINT_MOTOR)
-        rb = v2 (0.0, 0.0);
-      else if (j->type == CAROM_JOINT_PRISMATIC || j->type == CAROM_JOINT_WHEEL)
+      else
         {
-          /* a's moment arm reaches b's anchor: ra + d */
-          frame f = frame_now (j, A, B);
-          ra = v2_add (f.d, f.ra);
+          ra = rot2_apply (A->dq, j->ra);
+          if (j->type == CAROM_JOINT_MOTOR)
+            rb = v2 (0.0, 0.0);
+          else if (j->type == CAROM_JOINT_PRISMATIC || j->type == CAROM_JOINT_WHEEL)
+            {
+              /* a's moment arm reaches b's anchor: ra + d */
+              frame f = frame_now (j, A, B);
+              ra = v2_add (f.d, f.ra);
+            }
+          apply (A, B, ra, rb, p, l);
         }
-      apply (A, B, ra, rb, p, l);
+      if (joint_sane (A) && joint_sane (B))
+        *SA = a, *SB = b;
+      else
+        joint_forget_impulses (j);
     }
 }
 

@@ -837,6 +837,67 @@ static void test_two_worlds_step_joints_alike (void **state)
   carom_world_destroy (w2);
 }
 
+/* Fuzz finding F12: a prismatic or wheel joint between two boxes resting
+ * on the ground, under gravity of CAROM_MAX_MAGNITUDE pulling partly
+ * across the axis. The bodies part along the axis by 1e90 within a step,
+ * and a's arm reaches b's anchor: the warm start spun a body at 1e186 rad/s
+ * and the next turned it to NaN. Every pass of a joint is kept only where
+ * its bodies stay within CAROM_MAX_MAGNITUDE (joint_sane); the warm start
+ * is such a pass too. */
+static void test_sliding_joints_under_the_largest_gravity_stay_finite (void **state)
+{
+  static const carom_joint_type types[] = { CAROM_JOINT_PRISMATIC, CAROM_JOINT_WHEEL };
+  static const double gx[] = { 0.0, 1e40, -1e70, 1e99 };
+  size_t t, g;
+  int a, k, cases = 0;
+  (void) state;
+  for (t = 0; t < sizeof types / sizeof types[0]; ++t)
+    for (g = 0; g < sizeof gx / sizeof gx[0]; ++g)
+      for (a = 0; a < 3; ++a)
+        {
+          carom_world *w = NULL;
+          carom_world_def def;
+          carom_joint_def jd;
+          carom_body_id ids[3];
+          carom_world_def_init (&def, sizeof def);
+          def.gravity_x = gx[g];
+          def.gravity_y = -CAROM_MAX_MAGNITUDE;
+          def.substeps = 3;
+          def.iterations = 4;
+          assert_status (carom_world_init (&w, &def), CAROM_OK);
+          ids[0] = add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 8.0, 1.0);
+          ids[1] = add_box (w, CAROM_DYNAMIC, 0.0, 0.5, 0.0, 1.0, 1.0);
+          ids[2] = add_box (w, CAROM_DYNAMIC, 0.2, 1.6, 0.1 * a, 0.8, 1.2);
+          carom_joint_def_init (&jd, sizeof jd);
+          jd.type = types[t], jd.a = ids[1], jd.b = ids[2];
+          jd.x = 0.1, jd.y = 1.0 + 0.3 * a;
+          jd.axis_x = 0.3 * a, jd.axis_y = 1.0;
+          assert_status (carom_world_add_joint (w, &jd, NULL), CAROM_OK);
+          for (k = 0; k < 12; ++k)
+            {
+              int i;
+              assert_status (carom_world_update (w, DT), CAROM_OK);
+              for (i = 1; i < 3; ++i)
+                {
+                  double x, y, angle, vx, vy, spin;
+                  carom_body_get_position (w, ids[i], &x, &y);
+                  carom_body_get_angle (w, ids[i], &angle);
+                  carom_body_get_velocity (w, ids[i], &vx, &vy);
+                  carom_body_get_spin (w, ids[i], &spin);
+                  if (!(isfinite (x) && isfinite (y) && isfinite (angle) && isfinite (vx) && isfinite (vy)
+                        && isfinite (spin)))
+                    fail_msg ("%s, gravity (%g, %g), case %d, step %d: body %d at (%g, %g) angle %g v (%g, %g) "
+                              "spin %g",
+                              t ? "wheel" : "prismatic", gx[g], def.gravity_y, a, k + 1, i, x, y, angle, vx, vy,
+                              spin);
+                }
+            }
+          carom_world_destroy (w);
+          ++cases;
+        }
+  assert_int_equal (cases, 24);
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
@@ -861,6 +922,7 @@ int main (void)
     cmocka_unit_test (test_collide_connected_keeps_contact),
     cmocka_unit_test (test_joined_bodies_sleep_and_wake_together),
     cmocka_unit_test (test_two_worlds_step_joints_alike),
+    cmocka_unit_test (test_sliding_joints_under_the_largest_gravity_stay_finite),
   };
   return cmocka_run_group_tests_name ("joints", tests, NULL, NULL);
 }
