@@ -256,6 +256,16 @@ void contact_batch_push_out (carom_world *world, const step_context *ctx, int fi
                                      first);
 }
 
+void contact_batch_solve_push_out (carom_world *world, const step_context *ctx)
+{
+  if (world->solver_path == SOLVER_PATH_AVX2)
+    contact_batch_solve_push_out_avx2 (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h,
+                                       ctx->push_rate);
+  else
+    contact_batch_solve_push_out_portable (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h,
+                                           ctx->push_rate);
+}
+
 /* ------------------------------------------------- the portable kernels */
 
 typedef struct wide {

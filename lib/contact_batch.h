@@ -77,6 +77,11 @@ void contact_batch_prepare (struct carom_world *world, const step_context *ctx);
 void contact_batch_warm_start (struct carom_world *world);
 void contact_batch_solve (struct carom_world *world, const step_context *ctx);
 void contact_batch_push_out (struct carom_world *world, const step_context *ctx, int first);
+/* contact_batch_solve, then contact_batch_push_out (first), in one walk
+ * over the batches, with the same results: the push-out reads nothing the
+ * solve writes. The solver runs it as the sub-step's last solve pass, where
+ * nothing but velocity passes comes before its first push-out. */
+void contact_batch_solve_push_out (struct carom_world *world, const step_context *ctx);
 /* The impulses the batches accumulated back into their contacts (for the
  * next step's warm start and for carom_world_get_contacts). */
 void contact_batch_store (struct carom_world *world);
@@ -89,5 +94,9 @@ void contact_batch_push_out_portable (contact_batch *c, int32_t n, struct solver
 void contact_batch_warm_start_avx2 (contact_batch *c, int32_t n, struct solver_body *sb);
 void contact_batch_solve_avx2 (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h);
 void contact_batch_push_out_avx2 (contact_batch *c, int32_t n, struct solver_body *sb, double push_rate, int first);
+void contact_batch_solve_push_out_portable (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h,
+                                            double push_rate);
+void contact_batch_solve_push_out_avx2 (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h,
+                                        double push_rate);
 
 #endif

@@ -54,4 +54,10 @@ void contact_batch_push_out_avx2 (contact_batch *c, int32_t n, struct solver_bod
   contact_batch_push_out_portable (c, n, sb, push_rate, first);
 }
 
+void contact_batch_solve_push_out_avx2 (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h,
+                                        double push_rate)
+{
+  contact_batch_solve_push_out_portable (c, n, sb, inv_h, push_rate);
+}
+
 #endif

@@ -50,6 +50,15 @@ KERNEL_FN void KERNEL (gather) (const solver_body *sb, const int32_t *idx, KERNE
                       &o->qs);
 }
 
+/* The pseudo-velocities alone into o, whose motion since the step began
+ * (gathered with the velocities) stays. */
+KERNEL_FN void KERNEL (gather_pseudo) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o)
+{
+  wide rest;
+  KERNEL (transpose) (W_LOAD (&sb[idx[0]].v.x + 3), W_LOAD (&sb[idx[1]].v.x + 3), W_LOAD (&sb[idx[2]].v.x + 3),
+                      W_LOAD (&sb[idx[3]].v.x + 3), &o->vx, &o->vy, &o->w, &rest);
+}
+
 /* Lanes write back in order, the fourth double of each row as it was; a
  * body that two lanes share does not move (it has no colour), and both
  * write its unchanged velocity. */
@@ -87,6 +96,24 @@ KERNEL_FN void KERNEL (gather) (const solver_body *sb, const int32_t *idx, KERNE
   o->py = W_LOAD (t[4]);
   o->qc = W_LOAD (t[5]);
   o->qs = W_LOAD (t[6]);
+}
+
+/* The pseudo-velocities alone into o, whose motion since the step began
+ * (gathered with the velocities) stays. */
+KERNEL_FN void KERNEL (gather_pseudo) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o)
+{
+  double t[3][BATCH_LANES];
+  int i;
+  for (i = 0; i < BATCH_LANES; ++i)
+    {
+      const solver_body *x = &sb[idx[i]];
+      t[0][i] = x->pv.x;
+      t[1][i] = x->pv.y;
+      t[2][i] = x->pw;
+    }
+  o->vx = W_LOAD (t[0]);
+  o->vy = W_LOAD (t[1]);
+  o->w = W_LOAD (t[2]);
 }
 
 /* Lanes write back in order; a body that two lanes share does not move
@@ -234,38 +261,81 @@ KERNEL_ATTR void KERNEL (contact_batch_warm_start) (contact_batch *c, int32_t n,
     }
 }
 
+/* The separation of both points of a batch now (the solve's speculative
+ * bias and the push-out's overlap both start from it). */
+KERNEL_FN void KERNEL (separations) (const contact_batch *c, const KERNEL (lanes) *a, const KERNEL (lanes) *b, wide *s)
+{
+  s[0] = KERNEL (separation) (a, b, &c->p[0]);
+  s[1] = KERNEL (separation) (a, b, &c->p[1]);
+}
+
+/* One solve pass of a batch on its bodies' velocities a, b, the points
+ * separated by s: the normal impulses, then friction. */
+KERNEL_FN void KERNEL (solve_lanes) (contact_batch *c, KERNEL (lanes) *a, KERNEL (lanes) *b, const KERNEL (mass) *m,
+                                     const wide *s, wide ih)
+{
+  wide zero = W_SET1 (0.0);
+  wide bias[2], x[2], before[2], friction = W_LOAD (c->friction);
+  int j;
+  for (j = 0; j < 2; ++j)
+    {
+      /* a speculative point may close its gap within the sub-step */
+      bias[j] = W_SEL (M_GT (s[j], zero), W_MUL (s[j], ih), zero);
+      x[j] = before[j] = W_LOAD (c->p[j].normal_impulse);
+    }
+  KERNEL (normal) (c, a, b, m, bias, x, M_GE (zero, zero));
+  for (j = 0; j < 2; ++j)
+    {
+      batch_point *p = &c->p[j];
+      wide tx = W_NEG (W_LOAD (p->ny)), ty = W_LOAD (p->nx), rta = W_LOAD (p->rt_a), rtb = W_LOAD (p->rt_b);
+      wide old = W_LOAD (p->tangent_impulse), limit = W_MUL (friction, x[j]);
+      wide acc = W_SUB (old, W_MUL (W_LOAD (p->tangent_mass), KERNEL (speed) (a, b, tx, ty, rta, rtb)));
+      acc = W_MIN (W_MAX (acc, W_NEG (limit)), limit);
+      KERNEL (push) (a, b, m, tx, ty, rta, rtb, W_SUB (acc, old));
+      W_STORE (p->tangent_impulse, acc);
+      W_STORE (p->normal_impulse, x[j]);
+      W_STORE (p->total, W_ADD (W_LOAD (p->total), W_SUB (x[j], before[j])));
+    }
+}
+
+/* One push-out pass of a batch on its bodies' pseudo-velocities a, b, the
+ * points separated by s. Returns 0 where no lane had overlap to push out
+ * nor a push so far (the bodies keep their pseudo-velocities). */
+KERNEL_FN int KERNEL (push_lanes) (contact_batch *c, KERNEL (lanes) *a, KERNEL (lanes) *b, const KERNEL (mass) *m,
+                                   const wide *s, wide rate, int first)
+{
+  wide zero = W_SET1 (0.0), bias[2], x[2], slop = W_LOAD (c->slop), fastest = W_NEG (W_LOAD (c->max_push));
+  wmask use = M_GT (zero, zero);
+  int j;
+  for (j = 0; j < 2; ++j)
+    {
+      /* overlap beyond the slop, a fraction of it per sub-step, no faster
+       * than max_push */
+      wide e = W_ADD (s[j], slop);
+      bias[j] = W_SEL (M_GE (e, zero), zero, W_MAX (W_MUL (rate, e), fastest));
+      /* last sub-step's push was dropped with the move */
+      x[j] = first ? zero : W_LOAD (c->p[j].push_impulse);
+      use = M_OR (use, M_OR (M_LT (bias[j], zero), M_GT (x[j], zero)));
+    }
+  if (M_ANY (use))
+    KERNEL (normal) (c, a, b, m, bias, x, use);
+  W_STORE (c->p[0].push_impulse, x[0]);
+  W_STORE (c->p[1].push_impulse, x[1]);
+  return M_ANY (use);
+}
+
 KERNEL_ATTR void KERNEL (contact_batch_solve) (contact_batch *c, int32_t n, solver_body *sb, double inv_h)
 {
-  wide zero = W_SET1 (0.0), ih = W_SET1 (inv_h);
+  wide ih = W_SET1 (inv_h), s[2];
   int32_t i;
-  int j;
   for (i = 0; i < n; ++i, ++c)
     {
       KERNEL (lanes) a, b;
       KERNEL (mass) m = KERNEL (masses) (c);
-      wide bias[2], x[2], before[2], friction = W_LOAD (c->friction);
       KERNEL (gather) (sb, c->a, &a, 0);
       KERNEL (gather) (sb, c->b, &b, 0);
-      for (j = 0; j < 2; ++j)
-        {
-          /* a speculative point may close its gap within the sub-step */
-          wide s = KERNEL (separation) (&a, &b, &c->p[j]);
-          bias[j] = W_SEL (M_GT (s, zero), W_MUL (s, ih), zero);
-          x[j] = before[j] = W_LOAD (c->p[j].normal_impulse);
-        }
-      KERNEL (normal) (c, &a, &b, &m, bias, x, M_GE (zero, zero));
-      for (j = 0; j < 2; ++j)
-        {
-          batch_point *p = &c->p[j];
-          wide tx = W_NEG (W_LOAD (p->ny)), ty = W_LOAD (p->nx), rta = W_LOAD (p->rt_a), rtb = W_LOAD (p->rt_b);
-          wide old = W_LOAD (p->tangent_impulse), limit = W_MUL (friction, x[j]);
-          wide acc = W_SUB (old, W_MUL (W_LOAD (p->tangent_mass), KERNEL (speed) (&a, &b, tx, ty, rta, rtb)));
-          acc = W_MIN (W_MAX (acc, W_NEG (limit)), limit);
-          KERNEL (push) (&a, &b, &m, tx, ty, rta, rtb, W_SUB (acc, old));
-          W_STORE (p->tangent_impulse, acc);
-          W_STORE (p->normal_impulse, x[j]);
-          W_STORE (p->total, W_ADD (W_LOAD (p->total), W_SUB (x[j], before[j])));
-        }
+      KERNEL (separations) (c, &a, &b, s);
+      KERNEL (solve_lanes) (c, &a, &b, &m, s, ih);
       KERNEL (scatter) (sb, c->a, &a, 0);
       KERNEL (scatter) (sb, c->b, &b, 0);
     }
@@ -274,38 +344,46 @@ KERNEL_ATTR void KERNEL (contact_batch_solve) (contact_batch *c, int32_t n, solv
 KERNEL_ATTR void KERNEL (contact_batch_push_out) (contact_batch *c, int32_t n, solver_body *sb, double push_rate,
                                                   int first)
 {
-  wide zero = W_SET1 (0.0), rate = W_SET1 (push_rate);
+  wide rate = W_SET1 (push_rate), s[2];
   int32_t i;
-  int j;
   for (i = 0; i < n; ++i, ++c)
     {
       KERNEL (lanes) a, b;
       KERNEL (mass) m = KERNEL (masses) (c);
-      wide bias[2], x[2], slop = W_LOAD (c->slop), fastest = W_NEG (W_LOAD (c->max_push));
-      wmask use = M_GT (zero, zero);
       KERNEL (gather) (sb, c->a, &a, 1);
       KERNEL (gather) (sb, c->b, &b, 1);
-      for (j = 0; j < 2; ++j)
-        {
-          /* overlap beyond the slop, a fraction of it per sub-step, no faster
-           * than max_push */
-          wide e = W_ADD (KERNEL (separation) (&a, &b, &c->p[j]), slop);
-          bias[j] = W_SEL (M_GE (e, zero), zero, W_MAX (W_MUL (rate, e), fastest));
-          /* last sub-step's push was dropped with the move */
-          x[j] = first ? zero : W_LOAD (c->p[j].push_impulse);
-          use = M_OR (use, M_OR (M_LT (bias[j], zero), M_GT (x[j], zero)));
-        }
-      if (!M_ANY (use))
-        {
-          /* nothing to push out, nothing pushed yet: the bodies keep their
-           * pseudo-velocities */
-          W_STORE (c->p[0].push_impulse, x[0]);
-          W_STORE (c->p[1].push_impulse, x[1]);
-          continue;
-        }
-      KERNEL (normal) (c, &a, &b, &m, bias, x, use);
-      W_STORE (c->p[0].push_impulse, x[0]);
-      W_STORE (c->p[1].push_impulse, x[1]);
+      KERNEL (separations) (c, &a, &b, s);
+      if (!KERNEL (push_lanes) (c, &a, &b, &m, s, rate, first))
+        continue;
+      KERNEL (scatter) (sb, c->a, &a, 1);
+      KERNEL (scatter) (sb, c->b, &b, 1);
+    }
+}
+
+/* A solve pass and the sub-step's first push-out pass in one walk over the
+ * batches: the push-out reads the pseudo-velocities and the motion since
+ * the step began, which the solve leaves alone, so each batch is loaded
+ * once, its separations computed once, and the results are those of the
+ * two passes one after the other. */
+KERNEL_ATTR void KERNEL (contact_batch_solve_push_out) (contact_batch *c, int32_t n, solver_body *sb, double inv_h,
+                                                        double push_rate)
+{
+  wide ih = W_SET1 (inv_h), rate = W_SET1 (push_rate), s[2];
+  int32_t i;
+  for (i = 0; i < n; ++i, ++c)
+    {
+      KERNEL (lanes) a, b;
+      KERNEL (mass) m = KERNEL (masses) (c);
+      KERNEL (gather) (sb, c->a, &a, 0);
+      KERNEL (gather) (sb, c->b, &b, 0);
+      KERNEL (separations) (c, &a, &b, s);
+      KERNEL (solve_lanes) (c, &a, &b, &m, s, ih);
+      KERNEL (scatter) (sb, c->a, &a, 0);
+      KERNEL (scatter) (sb, c->b, &b, 0);
+      KERNEL (gather_pseudo) (sb, c->a, &a);
+      KERNEL (gather_pseudo) (sb, c->b, &b);
+      if (!KERNEL (push_lanes) (c, &a, &b, &m, s, rate, 1))
+        continue;
       KERNEL (scatter) (sb, c->a, &a, 1);
       KERNEL (scatter) (sb, c->b, &b, 1);
     }

@@ -7,7 +7,8 @@
  *   applies the impulses the contacts carried so far (warm starting),
  *   solves the contacts (iterations passes, more for small bodies),
  *   pushes overlap out on pseudo-velocities (split impulses, iterations
- *   passes), which never touch the velocities,
+ *   passes), which never touch the velocities (so the batches' first
+ *   push-out pass rides along with their last solve pass),
  *   moves the bodies by their velocities plus the pseudo-velocities, which
  *   are then dropped,
  *   and solves again (iterations passes);
@@ -236,7 +237,13 @@ void solver_step (carom_world *world, const step_context *ctx)
             joint_solve (world, ctx, 1);
           if (contacts)
             {
-              contact_batch_solve (world, ctx);
+              /* the batches' last solve pass walks them once with their
+               * first push-out pass (which reads nothing a velocity pass
+               * writes) */
+              if (it + 1 < ctx->iterations)
+                contact_batch_solve (world, ctx);
+              else
+                contact_batch_solve_push_out (world, ctx);
               contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, 0);
             }
         }
@@ -249,7 +256,8 @@ void solver_step (carom_world *world, const step_context *ctx)
           contact_shock (world, ctx);
           for (it = 0; it < ctx->iterations; ++it)
             {
-              contact_batch_push_out (world, ctx, it == 0);
+              if (it > 0)
+                contact_batch_push_out (world, ctx, 0);
               contact_push_out (world, ctx, it == 0);
             }
         }
