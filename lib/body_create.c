@@ -200,6 +200,7 @@ static carom_status build_part (carom_world *world, const carom_body_def *body_d
   carom_shape_def d;
   carom_status st = shape_def_import (in, &d);
   double c, s;
+  rot2 turn;
   int32_t i;
   if (st != CAROM_OK)
     return st;
@@ -227,7 +228,8 @@ static carom_status build_part (carom_world *world, const carom_body_def *body_d
   st = polygon_validate (d.xy, d.count);
   if (st != CAROM_OK)
     return st;
-  c = cos (d.angle), s = sin (d.angle);
+  turn = rot2_from_angle (d.angle);
+  c = turn.c, s = turn.s;
   for (i = 0; i < d.count; ++i)
     {
       double x = d.xy[2 * i], y = d.xy[2 * i + 1];

@@ -49,11 +49,8 @@ static inline vec2 v2_normalize (vec2 a)
   return l > 0.0 ? v2 (a.x / l, a.y / l) : v2 (0.0, 0.0);
 }
 
-static inline rot2 rot2_from_angle (double angle)
-{
-  rot2 q = {cos (angle), sin (angle)};
-  return q;
-}
+/* (cos angle, sin angle), the same bits on every machine (angle.c) */
+rot2 rot2_from_angle (double angle);
 static inline vec2 rot2_apply (rot2 q, vec2 v) { return v2 (q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y); }
 static inline vec2 rot2_apply_inv (rot2 q, vec2 v) { return v2 (q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y); }
 

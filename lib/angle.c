@@ -1,0 +1,84 @@
+/* The rotation of an angle: its cosine and sine, computed here rather than
+ * by the C library, so that a body's rotation (body_sync) and the poses the
+ * time of impact tries (toi.c) are the same bits on every machine, whatever
+ * its libm, and cost less than a call of the library's sin and cos.
+ *
+ * The angle is reduced to r = angle - k pi/2, |r| <= pi/4, with pi/2 in
+ * three parts (Cody and Waite: the first two have 33 bits, so k times them
+ * is exact for |k| < 2^20, and so is the first subtraction), then sin r and
+ * cos r are their Taylor series, to r^17 and r^16, by Horner's rule: the
+ * first term left out is below 2^-55 of the result for |r| <= pi/4, and the
+ * error is about one rounding (tests/test_body.c compares with libm over
+ * every quadrant). Beyond |angle| = 1e6 (k near 2^20) the C library's
+ * functions take over. */
+#include "vec2.h"
+
+#define PIO2_1 1.5707963267341256       /* 0x1.921fb544p+0: pi/2's first 33 bits */
+#define PIO2_2 6.077100506303966e-11    /* 0x1.0b4611a6p-34: its next 33 */
+#define PIO2_3 2.0222662487959506e-21   /* the rest, rounded */
+#define TWO_OVER_PI 0.6366197723675814
+#define REDUCE_MAX 1e6
+
+/* sin r for |r| <= pi/4: r - r^3/3! + ... + r^17/17! */
+static double sin_reduced (double r)
+{
+  double z = r * r;
+  double p = -1.0 / 355687428096000.0; /* -1/17! */
+  p = 1.0 / 1307674368000.0 + z * p;    /* 1/15! */
+  p = -1.0 / 6227020800.0 + z * p;      /* -1/13! */
+  p = 1.0 / 39916800.0 + z * p;         /* 1/11! */
+  p = -1.0 / 362880.0 + z * p;          /* -1/9! */
+  p = 1.0 / 5040.0 + z * p;             /* 1/7! */
+  p = -1.0 / 120.0 + z * p;             /* -1/5! */
+  p = 1.0 / 6.0 + z * p;                /* 1/3! */
+  return r - (r * z) * p;
+}
+
+/* cos r for |r| <= pi/4: 1 - r^2/2! + ... + r^16/16! */
+static double cos_reduced (double r)
+{
+  double z = r * r;
+  double p = 1.0 / 20922789888000.0; /* 1/16! */
+  p = -1.0 / 87178291200.0 + z * p;  /* -1/14! */
+  p = 1.0 / 479001600.0 + z * p;     /* 1/12! */
+  p = -1.0 / 3628800.0 + z * p;      /* -1/10! */
+  p = 1.0 / 40320.0 + z * p;         /* 1/8! */
+  p = -1.0 / 720.0 + z * p;          /* -1/6! */
+  p = 1.0 / 24.0 + z * p;            /* 1/4! */
+  return 1.0 - (0.5 * z - (z * z) * p);
+}
+
+rot2 rot2_from_angle (double angle)
+{
+  double k, r, c, s, x;
+  long n;
+  rot2 q;
+  if (!(fabs (angle) <= REDUCE_MAX))
+    {
+      q.c = cos (angle), q.s = sin (angle);
+      return q;
+    }
+  /* the nearest k (a tie either way: |r| <= pi/4 for both), by a
+   * conversion that truncates, not a call of floor */
+  x = angle * TWO_OVER_PI;
+  n = (long) (x >= 0.0 ? x + 0.5 : x - 0.5);
+  k = (double) n;
+  r = ((angle - k * PIO2_1) - k * PIO2_2) - k * PIO2_3;
+  c = cos_reduced (r), s = sin_reduced (r);
+  switch (n & 3) /* k mod 4 (two's complement: -1 & 3 is 3) */
+    {
+    case 0:
+      q.c = c, q.s = s;
+      break;
+    case 1:
+      q.c = -s, q.s = c;
+      break;
+    case 2:
+      q.c = -c, q.s = -s;
+      break;
+    default:
+      q.c = s, q.s = -c;
+      break;
+    }
+  return q;
+}
