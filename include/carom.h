@@ -383,7 +383,9 @@ CAROM_API carom_status carom_world_add_compound (carom_world *world,
                                                  int32_t count,
                                                  carom_body_id *id);
 
-/** Remove a body; its id becomes stale. Errors: NULL_ARGUMENT, STALE_BODY. */
+/** Remove a body; its id becomes stale. What it touched wakes, and its
+ * weight comes off the impulses of the contacts beneath it, which the next
+ * update starts from (docs/physics.md). Errors: NULL_ARGUMENT, STALE_BODY. */
 CAROM_API carom_status carom_world_remove_body (carom_world *world,
                                                 carom_body_id id);
 

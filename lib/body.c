@@ -15,6 +15,8 @@ void bodies_init (carom_world *world)
   world->slot_count = world->slot_cap = world->live_count = 0;
   world->free_slots = NULL;
   world->free_count = world->free_cap = 0;
+  world->unload = NULL;
+  world->unload_cap = 0;
 }
 
 void bodies_destroy (carom_world *world)
@@ -25,6 +27,7 @@ void bodies_destroy (carom_world *world)
       shape_destroy (&world->bodies[i].shape, &world->allocator);
   mem_free (&world->allocator, world->bodies, (size_t) world->slot_cap * sizeof (body));
   mem_free (&world->allocator, world->free_slots, (size_t) world->free_cap * sizeof (int32_t));
+  mem_free (&world->allocator, world->unload, (size_t) world->unload_cap * sizeof (double));
   bodies_init (world);
 }
 
@@ -118,7 +121,9 @@ carom_status body_reserve_slot (carom_world *world)
                        sizeof (body)))
     return CAROM_ERR_OUT_OF_MEMORY;
   if (!mem_reserve (&world->allocator, (void **) &world->free_slots, &world->free_cap, world->live_count + 1,
-                    sizeof (int32_t)))
+                    sizeof (int32_t))
+      || !mem_reserve (&world->allocator, (void **) &world->unload, &world->unload_cap, 3 * (world->slot_count + 1),
+                       sizeof (double)))
     return CAROM_ERR_OUT_OF_MEMORY;
   return CAROM_OK;
 }

@@ -757,10 +757,103 @@ static void forget_in (contact *list, int32_t *count, int32_t slot)
   *count = k;
 }
 
+/* How much of contact k's normal impulse holds body x up against gravity
+ * (down: its unit direction): the impulse times the normal's share along
+ * gravity, where the other body is below x; else 0. */
+static double holds_up (const contact *k, int32_t x, vec2 down)
+{
+  /* the normal points from a to b: the other body is below x where the
+   * normal from x to it points down */
+  double along = v2_dot (k->points[0].normal, down) * (k->a == x ? 1.0 : -1.0), total = 0.0;
+  int32_t j;
+  if (!(along > 0.0))
+    return 0.0;
+  for (j = 0; j < k->count; ++j)
+    total += k->points[j].normal_impulse;
+  return total * along;
+}
+
+/* Body `slot` is being removed: take its weight off the impulses the
+ * contacts beneath it carry into the next step's warm start. What it
+ * pressed on each body below (the impulses of its contacts with them,
+ * along gravity) comes off that body's own supports, shared as they share
+ * its load now, and so on down to the ground. Otherwise the next warm start
+ * would apply the removed weight's reaction to what carried it and throw
+ * it up (Solver2D's "warm start energy"). Each round takes one level;
+ * contacts keep their friction in proportion. Needs no allocation: the
+ * scratch is reserved with each slot (body_reserve_slot). */
+static void unload_pile (carom_world *world, int32_t slot)
+{
+  contacts *c = &world->contacts;
+  int32_t n = world->slot_count, i, j, side, round;
+  double *excess = world->unload, *next = excess + n, *held = next + n, g = v2_len (world->gravity);
+  vec2 down;
+  int more = 1;
+  if (!(g > 0.0) || c->count == 0)
+    return;
+  down = v2_scale (world->gravity, 1.0 / g);
+  for (i = 0; i < n; ++i)
+    excess[i] = 0.0;
+  for (i = 0; i < c->count; ++i)
+    {
+      const contact *k = &c->list[i];
+      int32_t other = k->a == slot ? k->b : k->b == slot ? k->a : -1;
+      if (other >= 0 && world->bodies[other].type == CAROM_DYNAMIC)
+        excess[other] += holds_up (k, slot, down);
+    }
+  for (round = 0; more && round < n; ++round)
+    {
+      more = 0;
+      for (i = 0; i < n; ++i)
+        held[i] = next[i] = 0.0;
+      for (i = 0; i < c->count; ++i)
+        {
+          const contact *k = &c->list[i];
+          if (k->a == slot || k->b == slot)
+            continue;
+          if (excess[k->a] > 0.0)
+            held[k->a] += holds_up (k, k->a, down);
+          if (excess[k->b] > 0.0)
+            held[k->b] += holds_up (k, k->b, down);
+        }
+      for (i = 0; i < c->count; ++i)
+        {
+          contact *k = &c->list[i];
+          if (k->a == slot || k->b == slot)
+            continue;
+          for (side = 0; side < 2; ++side)
+            {
+              int32_t x = side ? k->b : k->a, other = side ? k->a : k->b;
+              double up, share;
+              if (!(excess[x] > 0.0 && held[x] > 0.0))
+                continue;
+              up = holds_up (k, x, down);
+              if (!(up > 0.0))
+                continue;
+              /* this contact's part of x's load, and what of it goes */
+              share = excess[x] < held[x] ? excess[x] / held[x] : 1.0;
+              for (j = 0; j < k->count; ++j)
+                {
+                  k->points[j].normal_impulse *= 1.0 - share;
+                  k->points[j].tangent_impulse *= 1.0 - share;
+                }
+              if (world->bodies[other].type == CAROM_DYNAMIC)
+                {
+                  next[other] += share * up;
+                  more = 1;
+                }
+            }
+        }
+      for (i = 0; i < n; ++i)
+        excess[i] = next[i];
+    }
+}
+
 void contacts_forget_body (carom_world *world, int32_t slot)
 {
   contacts *c = &world->contacts;
   int32_t i, k, points = 0;
+  unload_pile (world, slot);
   /* what rested on it must fall: wake what it touched */
   for (i = 0; i < c->count; ++i)
     if (c->list[i].a == slot || c->list[i].b == slot)

@@ -19,6 +19,10 @@ struct carom_world {
   int32_t slot_count, slot_cap, live_count;
   int32_t *free_slots;
   int32_t free_count, free_cap;
+  double *unload;   /* three per slot, reserved with each slot: removing a
+                       body takes its weight off what it rested on
+                       (contacts_forget_body) without allocating */
+  int32_t unload_cap;
 
   broadphase broad;
   contacts contacts;

@@ -769,8 +769,7 @@ static const struct
   const char *known;
 } samples[] = {
   { "Single Box", single_box, NULL },
-  { "Warm Start Energy", warm_start_energy,
-    "largest rise above the built height after the removal / radius 1.53e-02 (bound 1e-02; fastest 0.292 m/s)" },
+  { "Warm Start Energy", warm_start_energy, NULL },
   { "High Mass Ratio 1", high_mass_ratio_1, NULL },
   { "High Mass Ratio 2", high_mass_ratio_2, NULL },
   { "High Mass Ratio 3", high_mass_ratio_3, NULL },

@@ -688,6 +688,81 @@ static void test_elastic_pile_under_gravity_gains_no_energy (void **state)
   carom_world_destroy (w);
 }
 
+/* A heavy body taken off a pile (carom_world_remove_body): the impulses
+ * the contacts beneath it carry into the next step held its weight too,
+ * and must not throw up what carried it. Three cases: Solver2D's circles
+ * (the top one 100 times denser), a column of four boxes under one 50
+ * times denser, and a box 50 times denser across two columns of three.
+ * Bound: in the 2 s after the removal no remaining body rises more than
+ * 1% of its size above where it was, nor moves faster than 1% of the
+ * speed gravity gives in one step per unit of size. */
+static void test_removing_a_heavy_top_throws_nothing_up (void **state)
+{
+  int kase;
+  (void) state;
+  for (kase = 0; kase < 3; ++kase)
+    {
+      carom_world *w = world_with (0, -10, 0, 0.6);
+      carom_body_def d;
+      carom_body_id ids[8], heavy = 0;
+      double y0[8], size[8], rise = 0.0, fastest = 0.0;
+      int n = 0, i, k;
+      add_static_box (w, 0.0, -0.5, 40.0, 1.0);
+      carom_body_def_init (&d, sizeof d);
+      if (kase == 0)
+        for (i = 0; i < 3; ++i)
+          {
+            d.x = 0.0, d.y = 0.5 + i, d.density = i == 2 ? 100.0 : 1.0;
+            assert_status (carom_world_add_circle (w, &d, 0.5, &ids[n]), CAROM_OK);
+            size[n++] = 1.0;
+          }
+      else if (kase == 1)
+        for (i = 0; i < 5; ++i)
+          {
+            d.x = 0.0, d.y = 0.5 + i, d.density = i == 4 ? 50.0 : 1.0;
+            assert_status (carom_world_add_box (w, &d, 1.0, 1.0, &ids[n]), CAROM_OK);
+            size[n++] = 1.0;
+          }
+      else
+        {
+          for (i = 0; i < 6; ++i)
+            {
+              d.x = i < 3 ? -1.0 : 1.0, d.y = 0.5 + i % 3, d.density = 1.0;
+              assert_status (carom_world_add_box (w, &d, 1.0, 1.0, &ids[n]), CAROM_OK);
+              size[n++] = 1.0;
+            }
+          d.x = 0.0, d.y = 3.25, d.density = 50.0;
+          assert_status (carom_world_add_box (w, &d, 3.0, 0.5, &ids[n]), CAROM_OK);
+          size[n++] = 0.5;
+        }
+      heavy = ids[n - 1];
+      for (k = 0; k < 120; ++k)
+        assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
+      for (i = 0; i < n - 1; ++i)
+        {
+          double x;
+          carom_body_get_position (w, ids[i], &x, &y0[i]);
+        }
+      assert_status (carom_world_remove_body (w, heavy), CAROM_OK);
+      for (k = 0; k < 120; ++k)
+        {
+          assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
+          for (i = 0; i < n - 1; ++i)
+            {
+              double x, y, vx, vy;
+              carom_body_get_position (w, ids[i], &x, &y);
+              carom_body_get_velocity (w, ids[i], &vx, &vy);
+              rise = fmax (rise, (y - y0[i]) / size[i]);
+              fastest = fmax (fastest, sqrt (vx * vx + vy * vy) / size[i]);
+            }
+        }
+      if (!(rise < 0.01 && fastest < 0.01 * 10.0 / 60.0))
+        fail_msg ("case %d: rose %.3g of its size, fastest %.3g sizes/s (bounds 0.01, %.3g)", kase, rise, fastest,
+                  0.01 * 10.0 / 60.0);
+      carom_world_destroy (w);
+    }
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
@@ -708,6 +783,7 @@ int main (void)
     cmocka_unit_test (test_concave_interlock_stays_caught),
     cmocka_unit_test (test_awkward_geometry),
     cmocka_unit_test (test_elastic_pile_under_gravity_gains_no_energy),
+    cmocka_unit_test (test_removing_a_heavy_top_throws_nothing_up),
     cmocka_unit_test (test_thesis_hard_cases_many_angles),
   };
   return cmocka_run_group_tests_name ("stability", tests, NULL, NULL);
