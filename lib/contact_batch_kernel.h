@@ -372,19 +372,22 @@ KERNEL_ATTR void KERNEL (contact_batch_solve_push_out) (contact_batch *c, int32_
   int32_t i;
   for (i = 0; i < n; ++i, ++c)
     {
-      KERNEL (lanes) a, b;
+      KERNEL (lanes) a, b, pa, pb;
       KERNEL (mass) m = KERNEL (masses) (c);
       KERNEL (gather) (sb, c->a, &a, 0);
       KERNEL (gather) (sb, c->b, &b, 0);
+      /* the pseudo-velocities before the velocities are written back: a
+       * load overlapping a store just made would wait for it */
+      pa = a, pb = b;
+      KERNEL (gather_pseudo) (sb, c->a, &pa);
+      KERNEL (gather_pseudo) (sb, c->b, &pb);
       KERNEL (separations) (c, &a, &b, s);
       KERNEL (solve_lanes) (c, &a, &b, &m, s, ih);
       KERNEL (scatter) (sb, c->a, &a, 0);
       KERNEL (scatter) (sb, c->b, &b, 0);
-      KERNEL (gather_pseudo) (sb, c->a, &a);
-      KERNEL (gather_pseudo) (sb, c->b, &b);
-      if (!KERNEL (push_lanes) (c, &a, &b, &m, s, rate, 1))
+      if (!KERNEL (push_lanes) (c, &pa, &pb, &m, s, rate, 1))
         continue;
-      KERNEL (scatter) (sb, c->a, &a, 1);
-      KERNEL (scatter) (sb, c->b, &b, 1);
+      KERNEL (scatter) (sb, c->a, &pa, 1);
+      KERNEL (scatter) (sb, c->b, &pb, 1);
     }
 }
