@@ -792,8 +792,10 @@ static void unload_pile (carom_world *world, int32_t slot)
   if (!(g > 0.0) || c->count == 0)
     return;
   down = v2_scale (world->gravity, 1.0 / g);
-  for (i = 0; i < n; ++i)
-    excess[i] = 0.0;
+  /* only bodies of some contact are read or written: each round costs the
+   * contacts, not the slots (a world may remove many bodies a step) */
+  for (i = 0; i < c->count; ++i)
+    excess[c->list[i].a] = excess[c->list[i].b] = 0.0;
   for (i = 0; i < c->count; ++i)
     {
       const contact *k = &c->list[i];
@@ -804,8 +806,11 @@ static void unload_pile (carom_world *world, int32_t slot)
   for (round = 0; more && round < n; ++round)
     {
       more = 0;
-      for (i = 0; i < n; ++i)
-        held[i] = next[i] = 0.0;
+      for (i = 0; i < c->count; ++i)
+        {
+          const contact *k = &c->list[i];
+          held[k->a] = next[k->a] = held[k->b] = next[k->b] = 0.0;
+        }
       for (i = 0; i < c->count; ++i)
         {
           const contact *k = &c->list[i];
@@ -844,8 +849,11 @@ static void unload_pile (carom_world *world, int32_t slot)
                 }
             }
         }
-      for (i = 0; i < n; ++i)
-        excess[i] = next[i];
+      for (i = 0; i < c->count; ++i)
+        {
+          const contact *k = &c->list[i];
+          excess[k->a] = next[k->a], excess[k->b] = next[k->b];
+        }
     }
 }
 
