@@ -62,7 +62,9 @@ static inline carom_body_id body_slot_id (const body *b, int32_t slot)
 /* How far any point of the body can move in time h: (|v| + |w| R) h, plus
  * what an acceleration of magnitude `accel` (gravity) adds within h. Without
  * continuous collision (world off and not a bullet) contacts are looked for
- * no further ahead than 2% of the body's size. */
+ * no further ahead than 2% of the body's size, except between pieces that
+ * were in contact the step before and do not bounce (contact.c,
+ * pair_pieces). */
 static inline double body_reach_uncapped (const body *b, double h, double accel)
 {
   return h * (v2_len (b->v) + fabs (b->w) * b->shape.bound_radius + (b->inv_mass > 0.0 ? accel * h : 0.0));

@@ -104,6 +104,10 @@ static int32_t find_old (carom_world *world, int32_t a, int32_t b, int32_t pa, i
 
 typedef struct pair_context {
   double restitution, friction, slop, margin;
+  double margin_kept;    /* the margin of pieces that had a contact the step
+                            before and do not bounce: as far as the bodies
+                            can move in the step, turning included, capped
+                            or not (pair_pieces) */
   double reuse_lin, reuse_ang; /* manifold reuse tolerance (0: never) */
   const convex_piece *pieces_a, *pieces_b; /* a pair with a compound: the
                                               pieces collide_pieces takes */
@@ -342,7 +346,14 @@ static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, i
   if (can_reuse && old >= 0 && reuse_manifold (&c->old[old], xa, xb, pc->reuse_lin, pc->reuse_ang, m))
     from = &c->old[old];
   else
-    narrow_phase (world, a, b, pa, pb, pc->pieces_a, pc->pieces_b, xa, xb, pc->margin, m);
+    /* Pieces in contact the step before look as far ahead as their bodies
+     * can move: a box tipping over from its corner turns its far corner
+     * down faster than the capped reach sees (body_reach_capped), and
+     * would land it deep. Few pairs are in contact at a time, and a
+     * resting speculative point costs the solver little; a bouncy one
+     * would take the time of impact's work for every corner nearby. */
+    narrow_phase (world, a, b, pa, pb, pc->pieces_a, pc->pieces_b, xa, xb,
+                  old >= 0 && pc->restitution == 0.0 ? pc->margin_kept : pc->margin, m);
   add_manifold (world, a, b, pa, pb, m, pc, old, from, xa, xb);
 }
 
@@ -647,6 +658,7 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
    * are contacts now, so impacts are met before the bodies overlap */
   pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], ctx->continuous || B->bullet)
               + body_reach_capped (B, world->broad.reach[b], ctx->continuous || A->bullet);
+  pc.margin_kept = pc.slop + world->broad.reach[a] + world->broad.reach[b];
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   pc.pieces_a = pc.pieces_b = NULL;

@@ -34,6 +34,32 @@ carom_world *world_with (double gx, double gy, double restitution, double fricti
   return w;
 }
 
+double tipping_box_depth (double manifold_tolerance, double side, double degrees)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_body_id box;
+  double a = degrees * M_PI / 180.0, deepest = 0.0;
+  int step;
+  carom_world_def_init (&def, sizeof def);
+  def.gravity_y = -10.0;
+  def.friction = 0.6;
+  def.manifold_tolerance = manifold_tolerance;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  add_box (w, CAROM_STATIC, 0, -0.5, 0, 100, 1);
+  box = add_box (w, CAROM_DYNAMIC, 0, 0.5 * side * (cos (a) + sin (a)) + 0.001 * side, a, side, side);
+  for (step = 0; step < 240; ++step)
+    {
+      double x, y, q;
+      assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+      carom_body_get_position (w, box, &x, &y);
+      carom_body_get_angle (w, box, &q);
+      deepest = fmax (deepest, (0.5 * side * (fabs (cos (q)) + fabs (sin (q))) - y) / side);
+    }
+  carom_world_destroy (w);
+  return deepest;
+}
+
 int world_teardown (void **state)
 {
   carom_world_destroy (*state);

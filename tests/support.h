@@ -48,6 +48,13 @@ int world_teardown (void **state);
  * restitution and friction; asserts that it was made. */
 carom_world *world_with (double gx, double gy, double restitution, double friction);
 
+/* A square of side `side` standing on its corner, turned by `degrees`,
+ * on a static ground (gravity 10, friction 0.6, the given manifold
+ * tolerance, the other settings the defaults) tips over onto its face in
+ * 4 s: the deepest any of its corners reaches below the ground, over the
+ * side. */
+double tipping_box_depth (double manifold_tolerance, double side, double degrees);
+
 /* Add a width x height box of the given type at (x, y), turned by angle;
  * asserts that it was added and returns its id. */
 carom_body_id add_box (carom_world *w, carom_body_type type, double x, double y, double angle, double width,

@@ -161,29 +161,6 @@ static void test_zero_never_reuses_and_stack_agrees (void **state)
   carom_world_destroy (w1);
 }
 
-/* The deepest any corner of a square of side `side` reaches below the
- * ground while it tips over from standing on a corner, turned by `degrees`,
- * onto its face (4 s), over its side. */
-static double tipping_depth (double tolerance, double side, double degrees)
-{
-  carom_world *w = make (tolerance, 0.6);
-  carom_body_id box;
-  double a = degrees * M_PI / 180.0, deepest = 0.0;
-  int step;
-  add_box (w, CAROM_STATIC, 0, -0.5, 0, 100, 1);
-  box = add_box (w, CAROM_DYNAMIC, 0, 0.5 * side * (cos (a) + sin (a)) + 0.001 * side, a, side, side);
-  for (step = 0; step < 240; ++step)
-    {
-      double x, y, q;
-      assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
-      carom_body_get_position (w, box, &x, &y);
-      carom_body_get_angle (w, box, &q);
-      deepest = fmax (deepest, (0.5 * side * (fabs (cos (q)) + fabs (sin (q))) - y) / side);
-    }
-  carom_world_destroy (w);
-  return deepest;
-}
-
 /* Reuse must not miss a corner coming down: the far corner of a box that
  * tips over from its near corner is not among the points while it is high,
  * and a manifold kept while the box turns by more than the contact margin
@@ -203,7 +180,7 @@ static void test_tipping_box_lands_as_deep_as_without_reuse (void **state)
   for (i = 0; i < sizeof sides / sizeof sides[0]; ++i)
     for (deg = 3; deg <= 43; deg += 4)
       {
-        double fresh = tipping_depth (0.0, sides[i], deg), kept = tipping_depth (def.manifold_tolerance, sides[i], deg);
+        double fresh = tipping_box_depth (0.0, sides[i], deg), kept = tipping_box_depth (def.manifold_tolerance, sides[i], deg);
         if (!(kept <= 1.05 * fresh + 1e-4))
           fail_msg ("side %g, %d degrees: the landing corner sank %.4g of the side with reuse, %.4g without", sides[i],
                     deg, kept, fresh);
