@@ -946,7 +946,9 @@ class Body(_Handle):
         return h is not None and _lib.carom_body_check(h, self._id) == 0
 
     def remove(self):
-        """Remove the body from its world; the handle becomes stale."""
+        """Remove the body from its world; the handle becomes stale. What it
+        touched wakes, and its weight comes off the impulses of the contacts
+        beneath it, which the next update starts from."""
         _check(_lib.carom_world_remove_body(self._h(), self._id), "remove")
         self._world._user_data.pop(self._id, None)
 

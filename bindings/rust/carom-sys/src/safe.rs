@@ -649,6 +649,9 @@ impl World {
         Ok(out)
     }
 
+    /// Remove a body; its id becomes stale. What it touched wakes, and its
+    /// weight comes off the impulses of the contacts beneath it, which the
+    /// next update starts from.
     pub fn remove_body(&mut self, id: carom_body_id) -> Result<()> {
         check(unsafe { carom_world_remove_body(self.as_ptr(), id) })
     }
