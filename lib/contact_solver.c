@@ -779,6 +779,36 @@ static int takes_impact (const contact_point *p)
   return p->in_impact == 1 || p->in_impact == IMPACT_BOUNCED;
 }
 
+/* Coulomb friction in an impact at time t: each point that took a normal
+ * impulse lambda takes the tangent impulse that stops its slip then (the
+ * bodies' velocities now, plus what gravity adds along the tangent until
+ * t), within mu lambda. It slows the slip and never reverses it, so it
+ * takes energy and never gives any; the sub-steps after it brake a slip
+ * that is left by mu times their own normal impulses, as for any contact.
+ * Without it a box that lands sliding on a slope would keep all of its
+ * speed along it, where the landing's friction brakes it or stops it. */
+static void impact_friction (contact *k, solver_body *a, solver_body *b, const step_context *ctx, double t,
+                             const double *lambda)
+{
+  int32_t j;
+  if (k->friction == 0.0)
+    return;
+  for (j = 0; j < k->count; ++j)
+    {
+      contact_point *p = &k->points[j];
+      vec2 tangent = v2_perp (p->normal);
+      double vt, limit, jt;
+      if (!(lambda[j] > 0.0) || p->tangent_mass == 0.0)
+        continue;
+      vt = contact_speed (a, b, tangent, p->rt_a, p->rt_b) + relative_fall (a, b, tangent, ctx) * t;
+      limit = k->friction * lambda[j];
+      jt = -p->tangent_mass * vt;
+      jt = jt > limit ? limit : (jt < -limit ? -limit : jt);
+      contact_push (a, b, tangent, p->rt_a, p->rt_b, jt);
+      p->tangent_total += jt;
+    }
+}
+
 /* The pairwise impact of contact k at time t into the step, if it closes
  * there faster than `tol` beyond its impact_threshold: each point's normal
  * speed then (the bodies' velocities now, plus what gravity adds until t)
@@ -839,6 +869,7 @@ static int impact_event (contact *k, solver_body *a, solver_body *b, impact_shif
       p->total_impulse += lambda[j];
       p->impact_moment += lambda[j] * t;
     }
+  impact_friction (k, a, b, ctx, t, lambda);
   shifts[k->a].p = v2_mad (shifts[k->a].p, -t, v2_sub (a->v, va));
   shifts[k->a].a -= (a->w - wa) * t;
   shifts[k->b].p = v2_mad (shifts[k->b].p, -t, v2_sub (b->v, vb));

@@ -706,6 +706,47 @@ static void test_rows_with_gaps_are_impacts_in_turn (void **state)
   print_message ("rows with gaps: largest error against impacts in turn %.3g\n", worst);
 }
 
+/* Coulomb friction in an impact: a disc (radius r, no gravity) strikes a
+ * static floor at normal speed vn and tangent speed vt, e = 0.5, with
+ * continuous collision on. The impact's normal impulse is J = (1 + e) m vn;
+ * its friction stops the slip at the contact if mu J reaches the impulse
+ * that does, m vt / 3 for a disc (the tangent's effective mass, 1 / (1/m +
+ * r^2 / I)): then vx = 2 vt / 3 and the disc rolls, w = -vx / r. Else it
+ * slides: vx = vt - mu J / m and w = -mu J r / I. Eight cases of each kind,
+ * over where in the step the disc meets the floor: the closed form to
+ * 1e-12. */
+static void test_impact_friction_is_coulombs (void **state)
+{
+  static const double cases[][3] = { { 10.0, 3.0, 0.6 }, { 4.0, 1.0, 1.0 }, { 2.0, 6.0, 0.2 }, { 5.0, 8.0, 0.3 } };
+  int c, g;
+  (void) state;
+  for (c = 0; c < 4; ++c)
+    for (g = 0; g < 8; ++g)
+      {
+        double vn = cases[c][0], vt = cases[c][1], mu = cases[c][2], e = 0.5, r = 0.5, J = (1.0 + e) * vn;
+        double gap = (0.05 + 0.1 * g) * vn / 60.0, vx, vy, w, want_vx, want_w;
+        carom_world *w_ = world_with (0.0, 0.0, e, mu);
+        carom_body_def d;
+        carom_body_id id;
+        assert_status (carom_world_set_continuous (w_, 1), CAROM_OK);
+        add_box (w_, CAROM_STATIC, 0.0, -0.5, 0.0, 40.0, 1.0);
+        carom_body_def_init (&d, sizeof d);
+        d.y = r + gap, d.vx = vt, d.vy = -vn;
+        assert_status (carom_world_add_circle (w_, &d, r, &id), CAROM_OK);
+        assert_status (carom_world_update (w_, 1.0 / 60.0), CAROM_OK);
+        carom_body_get_velocity (w_, id, &vx, &vy);
+        carom_body_get_spin (w_, id, &w);
+        if (mu * J >= vt / 3.0)
+          want_vx = 2.0 * vt / 3.0, want_w = -want_vx / r;
+        else
+          want_vx = vt - mu * J, want_w = -mu * J * r / (0.5 * r * r);
+        if (fabs (vx - want_vx) > 1e-12 * vt || fabs (w - want_w) > 1e-12 * vt / r || fabs (vy - e * vn) > 1e-12 * vn)
+          fail_msg ("vn %g vt %g mu %g gap %g: v (%.15g, %.15g) w %.15g, want (%.15g, %.15g) w %.15g", vn, vt, mu, gap,
+                    vx, vy, w, want_vx, e * vn, want_w);
+        carom_world_destroy (w_);
+      }
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
@@ -718,6 +759,7 @@ int main (void)
     cmocka_unit_test (test_off_centre_discs_are_the_closed_form),
     cmocka_unit_test (test_newtons_cradle_is_sequential),
     cmocka_unit_test (test_spinning_bar_leaves_a_wall_as_the_closed_form),
+    cmocka_unit_test (test_impact_friction_is_coulombs),
   };
   return cmocka_run_group_tests_name ("impacts", tests, NULL, NULL);
 }
