@@ -70,13 +70,6 @@ static inline double body_reach_uncapped (const body *b, double h, double accel)
   return h * (v2_len (b->v) + fabs (b->w) * b->shape.bound_radius + (b->inv_mass > 0.0 ? accel * h : 0.0));
 }
 
-/* body_reach_uncapped less the body's own translation, |v| h: what its
- * turning and gravity add along any direction. */
-static inline double body_reach_turning (const body *b, double h, double accel)
-{
-  return h * (fabs (b->w) * b->shape.bound_radius + (b->inv_mass > 0.0 ? accel * h : 0.0));
-}
-
 /* body_reach from its uncapped value r. */
 static inline double body_reach_capped (const body *b, double r, int continuous)
 {

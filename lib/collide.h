@@ -23,40 +23,6 @@ typedef struct manifold {
   manifold_point points[MANIFOLD_MAX_POINTS];
 } manifold;
 
-/* How near two shapes must come to make a contact when the margin depends
- * on the direction: along a unit axis n from the first shape towards the
- * second, base + closing . n where that is positive, else base. `closing`
- * is the most the shapes' relative motion can carry them towards each other
- * (their relative velocity times the time looked ahead), `base` the rest (the
- * slop, and what turning and gravity can add along any axis). A gap along a
- * fixed axis is a lower bound of the distance, so a pair apart by more than
- * this along any one axis cannot touch within the time. closing = 0: the
- * same margin, base, along every axis. */
-typedef struct contact_margin {
-  double base;
-  vec2 closing;
-} contact_margin;
-
-static inline contact_margin margin_uniform (double margin)
-{
-  contact_margin m;
-  m.base = margin;
-  m.closing = v2 (0.0, 0.0);
-  return m;
-}
-
-static inline double margin_along (contact_margin m, vec2 n)
-{
-  double c = v2_dot (m.closing, n);
-  return c > 0.0 ? m.base + c : m.base;
-}
-
-/* The largest margin along any axis. */
-static inline double margin_most (contact_margin m)
-{
-  return m.closing.x == 0.0 && m.closing.y == 0.0 ? m.base : m.base + v2_len (m.closing);
-}
-
 int32_t collide_circles (vec2 ca, double ra, vec2 cb, double rb, double margin, manifold *m);
 
 /* Convex polygon piece (body frame, placed by xa) against a circle. */
@@ -75,13 +41,6 @@ double polygons_separation (const convex_piece *a, xform xa, const convex_piece 
  * clipping the incident edge against the reference edge's side planes (up to
  * two points). */
 int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin, manifold *m);
-/* The same with a margin that depends on the axis: a pair is no contact
- * when some candidate axis separates it by more than its own margin (as a
- * pair moving apart along it, beyond the base margin), and the test ends at
- * the first such axis; any other pair gets the contact the largest margin
- * gives (margin_most). */
-int32_t collide_polygons_sat_toward (const convex_piece *a, xform xa, const convex_piece *b, xform xb,
-                                     contact_margin margin, manifold *m);
 
 /* The thesis' vertex-edge method (3.2.2) on the true outlines, convex or
  * concave (counter-clockwise, body frame): vertices of one polygon inside the

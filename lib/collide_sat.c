@@ -5,13 +5,9 @@
 /* The edge of `p` (placed by xp) whose outward normal separates it most from
  * `q` (placed by xq): the candidate axes of thesis fig. 3.7. The separation
  * along an axis is the gap between p's edge and q's nearest vertex; the
- * largest over the axes is minus the length of the minimum push vector. An
- * axis whose separation exceeds its margin (base, plus closing . n where
- * that is positive: `closing` in q's frame, towards q along p's outward
- * normals) proves the pieces apart: *apart is set and the search ends
- * there, as the rest cannot matter. */
-static double max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double base,
-                              vec2 closing, int32_t *edge, double *outer, int32_t *outer_edge, int *apart)
+ * largest over the axes is minus the length of the minimum push vector. */
+static double max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double margin,
+                              int32_t *edge, double *outer, int32_t *outer_edge)
 {
   xform rel = xform_relative (xq, xp); /* p in q's frame */
   double best = -INFINITY;
@@ -19,12 +15,11 @@ static double max_separation (const convex_piece *p, xform xp, const convex_piec
   *edge = 0;
   *outer = -INFINITY;
   *outer_edge = -1;
-  *apart = 0;
   for (i = 0; i < p->count; ++i)
     {
       vec2 n = rot2_apply (rel.q, p->normals[i]);
       double offset = v2_dot (n, xform_apply (rel, p->vertices[i]));
-      double s = INFINITY, c = v2_dot (closing, n);
+      double s = INFINITY;
       for (j = 0; j < q->count; ++j)
         {
           double d = v2_dot (n, q->vertices[j]);
@@ -32,12 +27,6 @@ static double max_separation (const convex_piece *p, xform xp, const convex_piec
             s = d;
         }
       s -= offset;
-      if (s > (c > 0.0 ? base + c : base))
-        {
-          *edge = i;
-          *apart = 1;
-          return s; /* a separating axis: no contact */
-        }
       if (s > *outer && !piece_edge_internal (p, i))
         {
           *outer = s;
@@ -47,6 +36,8 @@ static double max_separation (const convex_piece *p, xform xp, const convex_piec
         {
           best = s;
           *edge = i;
+          if (best > margin)
+            break; /* a separating axis: no contact, the rest cannot matter */
         }
     }
   return best;
@@ -55,10 +46,8 @@ static double max_separation (const convex_piece *p, xform xp, const convex_piec
 double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis)
 {
   int32_t edge_a, edge_b, outer_edge;
-  int apart;
-  vec2 still = v2 (0.0, 0.0);
-  double outer, sa = max_separation (a, xa, b, xb, INFINITY, still, &edge_a, &outer, &outer_edge, &apart);
-  double sb = max_separation (b, xb, a, xa, INFINITY, still, &edge_b, &outer, &outer_edge, &apart);
+  double outer, sa = max_separation (a, xa, b, xb, INFINITY, &edge_a, &outer, &outer_edge);
+  double sb = max_separation (b, xb, a, xa, INFINITY, &edge_b, &outer, &outer_edge);
   *axis = sb > sa ? v2_neg (rot2_apply (xb.q, b->normals[edge_b])) : rot2_apply (xa.q, a->normals[edge_a]);
   return sa > sb ? sa : sb;
 }
@@ -95,33 +84,18 @@ static int clip_segment (clip_vertex out[2], const clip_vertex in[2], vec2 n, do
 
 int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin, manifold *m)
 {
-  return collide_polygons_sat_toward (a, xa, b, xb, margin_uniform (margin), m);
-}
-
-int32_t collide_polygons_sat_toward (const convex_piece *a, xform xa, const convex_piece *b, xform xb,
-                                     contact_margin margin, manifold *m)
-{
   int32_t edge_a, edge_b, outer_a, outer_b, ref_edge, inc_edge = 0, i, n_inc, flip, tries;
-  int apart;
   const convex_piece *ref, *inc;
   xform xref, xinc;
-  double face_a, face_b, best = INFINITY, most = margin_most (margin), tol = 0.1 * most, side_tol;
+  double sep_a, sep_b, face_a, face_b, best = INFINITY, tol = 0.1 * margin, side_tol;
   vec2 n_ref, v1, v2_, tangent;
   clip_vertex seg[2], clip1[2], clip2[2];
   m->count = 0;
-  /* an axis proves them apart by its own margin: closing along a's outward
-   * normals (towards b) in b's frame, and along b's (towards a) in a's
-   * frame. Short of that, the pair is a contact as with the largest margin
-   * on every axis: its points at the largest margin, the face chosen with
-   * its tolerance, since the touch to come may be on another face than the
-   * one of least separation now (the time of impact finds it). */
-  max_separation (a, xa, b, xb, margin.base, rot2_apply_inv (xb.q, margin.closing), &edge_a, &face_a, &outer_a,
-                          &apart);
-  if (apart)
+  sep_a = max_separation (a, xa, b, xb, margin, &edge_a, &face_a, &outer_a);
+  if (sep_a > margin)
     return 0;
-  max_separation (b, xb, a, xa, margin.base, rot2_apply_inv (xa.q, v2_neg (margin.closing)), &edge_b, &face_b,
-                          &outer_b, &apart);
-  if (apart)
+  sep_b = max_separation (b, xb, a, xa, margin, &edge_b, &face_b, &outer_b);
+  if (sep_b > margin)
     return 0;
   /* the faces a contact may take: none of a seam (seams.h), though the
    * separation test above counts every axis */
@@ -175,7 +149,7 @@ int32_t collide_polygons_sat_toward (const convex_piece *a, xform xa, const conv
     {
       double sep = v2_dot (n_ref, v2_sub (clip2[i].v, v1));
       manifold_point *mp;
-      if (sep > most)
+      if (sep > margin)
         continue;
       mp = &m->points[m->count++];
       /* the point halfway between the incident vertex and the reference face */

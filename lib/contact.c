@@ -103,12 +103,11 @@ static int32_t find_old (carom_world *world, int32_t a, int32_t b, int32_t pa, i
 }
 
 typedef struct pair_context {
-  double restitution, friction, slop;
-  contact_margin margin;      /* how near pieces must come (on_pair) */
-  contact_margin margin_kept; /* the margin of pieces that had a contact the
-                                 step before and do not bounce: as far as the
-                                 bodies can move in the step, turning
-                                 included, capped or not (pair_pieces) */
+  double restitution, friction, slop, margin;
+  double margin_kept;    /* the margin of pieces that had a contact the step
+                            before and do not bounce: as far as the bodies
+                            can move in the step, turning included, capped
+                            or not (pair_pieces) */
   double reuse_lin, reuse_ang; /* manifold reuse tolerance (0: never) */
   const convex_piece *pieces_a, *pieces_b; /* a pair with a compound: the
                                               pieces collide_pieces takes */
@@ -256,76 +255,44 @@ static int32_t body_pieces (const body *B, const convex_piece **pieces, convex_p
  * body's pose. A circle against a polygon is tested the polygon first and
  * the result turned round (the normal then turns with b's face: bit 31 of
  * the feature, see reuse_manifold). */
-/* The points of a circle's manifold m within the margin along their own
- * normals, of those its test found within the largest margin: a circle's
- * normal is the direction of the distance (or a face's normal, along which
- * the gap is the distance), so a point beyond its margin there is of
- * pieces that cannot touch in the time. */
-static void keep_within (manifold *m, contact_margin margin)
-{
-  int32_t i, n = 0;
-  if (margin.closing.x == 0.0 && margin.closing.y == 0.0)
-    return;
-  for (i = 0; i < m->count; ++i)
-    if (-m->points[i].depth <= margin_along (margin, m->points[i].normal))
-      m->points[n++] = m->points[i];
-  m->count = n;
-}
-
-static void collide_pieces (const convex_piece *p, xform xa, const convex_piece *q, xform xb, contact_margin margin,
+static void collide_pieces (const convex_piece *p, xform xa, const convex_piece *q, xform xb, double margin,
                             manifold *m)
 {
   int32_t k;
-  double most = margin_most (margin);
   if (p->count == 0 && q->count == 0)
-    collide_circles (xform_apply (xa, p->center), p->radius, xform_apply (xb, q->center), q->radius, most, m);
+    collide_circles (xform_apply (xa, p->center), p->radius, xform_apply (xb, q->center), q->radius, margin, m);
   else if (q->count == 0)
-    collide_polygon_circle (p, xa, xform_apply (xb, q->center), q->radius, most, m);
+    collide_polygon_circle (p, xa, xform_apply (xb, q->center), q->radius, margin, m);
   else if (p->count > 0)
-    {
-      collide_polygons_sat_toward (p, xa, q, xb, margin, m);
-      return;
-    }
+    collide_polygons_sat (p, xa, q, xb, margin, m);
   else
     {
-      collide_polygon_circle (q, xb, xform_apply (xa, p->center), p->radius, most, m);
+      collide_polygon_circle (q, xb, xform_apply (xa, p->center), p->radius, margin, m);
       for (k = 0; k < m->count; ++k)
         {
           m->points[k].normal = v2_scale (m->points[k].normal, -1.0);
           m->points[k].feature |= 0x80000000u;
         }
     }
-  keep_within (m, margin);
 }
 
 /* The narrow phase for pieces pa, pb of bodies a, b placed at xa, xb (with a
  * compound, pieces_a and pieces_b are the two bodies' body_pieces). */
 static void narrow_phase (const carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb,
-                          const convex_piece *pieces_a, const convex_piece *pieces_b, xform xa, xform xb,
-                          contact_margin margin, manifold *m)
+                          const convex_piece *pieces_a, const convex_piece *pieces_b, xform xa, xform xb, double margin,
+                          manifold *m)
 {
   const shape *sa = &world->bodies[a].shape, *sb = &world->bodies[b].shape;
   if (pieces_a)
-    {
-      collide_pieces (&pieces_a[pa], xa, &pieces_b[pb], xb, margin, m);
-      return;
-    }
-  if (pa < 0 && pb < 0 && sa->kind == CAROM_SHAPE_CIRCLE)
-    collide_circles (xa.p, sa->radius, xb.p, sb->radius, margin_most (margin), m);
+    collide_pieces (&pieces_a[pa], xa, &pieces_b[pb], xb, margin, m);
+  else if (pa < 0 && pb < 0 && sa->kind == CAROM_SHAPE_CIRCLE)
+    collide_circles (xa.p, sa->radius, xb.p, sb->radius, margin, m);
   else if (pb < 0 && sb->kind == CAROM_SHAPE_CIRCLE)
-    collide_polygon_circle (&sa->pieces[pa], xa, xb.p, sb->radius, margin_most (margin), m);
+    collide_polygon_circle (&sa->pieces[pa], xa, xb.p, sb->radius, margin, m);
   else if (pa < 0)
-    {
-      /* its points' depths are no bound of the outlines' distance */
-      collide_polygons_vertex_edge (sa->vertices, sa->count, xa, sb->vertices, sb->count, xb, margin_most (margin), m);
-      return;
-    }
+    collide_polygons_vertex_edge (sa->vertices, sa->count, xa, sb->vertices, sb->count, xb, margin, m);
   else
-    {
-      collide_polygons_sat_toward (&sa->pieces[pa], xa, &sb->pieces[pb], xb, margin, m);
-      return;
-    }
-  keep_within (m, margin);
+    collide_polygons_sat (&sa->pieces[pa], xa, &sb->pieces[pb], xb, margin, m);
 }
 
 /* The largest of a cos(d) + b sin(d) over |d| <= turn (turn <= pi/2),
@@ -400,7 +367,7 @@ void contact_collide_at (const carom_world *world, const contact *k, xform xa, x
       body_pieces (A, &P, &ca);
       body_pieces (B, &Q, &cb);
     }
-  narrow_phase (world, k->a, k->b, k->piece_a, k->piece_b, P, Q, xa, xb, margin_uniform (margin), m);
+  narrow_phase (world, k->a, k->b, k->piece_a, k->piece_b, P, Q, xa, xb, margin, m);
 }
 
 /* The first root tau >= 0 of g0 + g1 tau - curve tau^2 / 2 (g0 >= 0), in
@@ -595,7 +562,7 @@ static void on_compound_pair (carom_world *world, int32_t a, int32_t b, pair_con
       for (j = 0; j < nb; ++j)
         {
           vec2 qc = xform_apply (xb, Q[j].center);
-          if (v2_len (v2_sub (qc, pc_center)) > P[i].bound_radius + Q[j].bound_radius + margin_most (pc->margin))
+          if (v2_len (v2_sub (qc, pc_center)) > P[i].bound_radius + Q[j].bound_radius + pc->margin)
             continue;
           mix_materials (world, ea, fa, compound_b ? material (Q[j].restitution, B->restitution) : B->restitution,
                          compound_b ? material (Q[j].friction, B->friction) : B->friction, pc);
@@ -618,7 +585,7 @@ int contact_bodies_overlap (const body *A, const body *B)
     for (j = 0; j < nb; ++j)
       {
         m.count = 0;
-        collide_pieces (&pa[i], xa, &pb[j], xb, margin_uniform (0.0), &m);
+        collide_pieces (&pa[i], xa, &pb[j], xb, 0.0, &m);
         for (k = 0; k < m.count; ++k)
           if (m.points[k].depth >= 0.0)
             return 1;
@@ -659,7 +626,6 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
   pair_context pc;
   manifold m;
   xform xa, xb;
-  double most;
   int32_t i, j;
   /* order: polygon before circle, else lower slot first, so the normal
    * convention of each narrow-phase test holds and the result does not
@@ -690,21 +656,9 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
   pc.slop = world->def.slop * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   /* speculative margin: pairs that can close their gap within this step
    * are contacts now, so impacts are met before the bodies overlap */
-  if (ctx->continuous || A->bullet || B->bullet)
-    {
-      /* as far as the bodies can move towards each other: their relative
-       * velocity along the axis, and their turning and gravity along any */
-      pc.margin.base = pc.slop + body_reach_turning (A, ctx->dt, ctx->accel) + body_reach_turning (B, ctx->dt, ctx->accel);
-      pc.margin.closing = v2_scale (v2_sub (A->v, B->v), ctx->dt);
-    }
-  else
-    pc.margin = margin_uniform (pc.slop + body_reach_capped (A, world->broad.reach[a], 0)
-                                + body_reach_capped (B, world->broad.reach[b], 0));
-  /* Pieces in contact the step before (not bouncy) look as far as either
-   * body can move, whichever way: in a pile the other contacts' impulses
-   * turn a pair that parts at the start of the step back within it. */
-  pc.margin_kept = margin_uniform (pc.slop + world->broad.reach[a] + world->broad.reach[b]);
-  most = margin_most (pc.margin);
+  pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], ctx->continuous || B->bullet)
+              + body_reach_capped (B, world->broad.reach[b], ctx->continuous || A->bullet);
+  pc.margin_kept = pc.slop + world->broad.reach[a] + world->broad.reach[b];
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   pc.pieces_a = pc.pieces_b = NULL;
@@ -727,7 +681,7 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
         {
           const convex_piece *p = &A->shape.pieces[i];
           vec2 c = xform_apply (xa, p->center);
-          if (v2_len (v2_sub (B->p, c)) > p->bound_radius + B->shape.radius + most)
+          if (v2_len (v2_sub (B->p, c)) > p->bound_radius + B->shape.radius + pc.margin)
             continue;
           pair_pieces (world, a, b, i, -1, &pc, xa, xb, &m, 0);
         }
@@ -746,7 +700,7 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
         {
           const convex_piece *q = &B->shape.pieces[j];
           vec2 qc = xform_apply (xb, q->center);
-          if (v2_len (v2_sub (qc, pc_center)) > p->bound_radius + q->bound_radius + most)
+          if (v2_len (v2_sub (qc, pc_center)) > p->bound_radius + q->bound_radius + pc.margin)
             continue;
           pair_pieces (world, a, b, i, j, &pc, xa, xb, &m, pc.reuse_lin > 0.0);
         }
