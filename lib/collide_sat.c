@@ -52,6 +52,15 @@ double polygons_separation (const convex_piece *a, xform xa, const convex_piece 
   return sa > sb ? sa : sb;
 }
 
+/* The largest hysteresis between the two pieces' faces, over the smaller
+ * piece's bounding radius. A tenth of a margin of slop size keeps nearly
+ * equal faces from flickering between steps; a margin that looks ahead
+ * as far as a fast body travels (continuous collision) can be many times a
+ * piece's size, and a tenth of it would prefer a face that lies beside the
+ * other piece, where clipping leaves no point: overlapping pieces would
+ * then have no contact (test_sat_overlapping_pieces_are_always_a_contact). */
+#define SAT_FACE_HYSTERESIS 0.005
+
 typedef struct clip_vertex {
   vec2 v;
   uint32_t id;
@@ -87,7 +96,11 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
   int32_t edge_a, edge_b, outer_a, outer_b, ref_edge, inc_edge = 0, i, n_inc, flip, tries;
   const convex_piece *ref, *inc;
   xform xref, xinc;
-  double sep_a, sep_b, face_a, face_b, best = INFINITY, tol = 0.1 * margin, side_tol;
+  double sep_a, sep_b, face_a, face_b, best = INFINITY, side_tol;
+  /* the hysteresis between the two pieces' faces (below): a tenth of the
+   * margin, but no more than SAT_FACE_HYSTERESIS of the smaller piece */
+  double most = SAT_FACE_HYSTERESIS * (a->bound_radius < b->bound_radius ? a->bound_radius : b->bound_radius);
+  double tol = 0.1 * margin < most ? 0.1 * margin : most;
   vec2 n_ref, v1, v2_, tangent;
   clip_vertex seg[2], clip1[2], clip2[2];
   m->count = 0;

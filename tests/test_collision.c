@@ -86,6 +86,65 @@ static void test_sat_separated_touching_margin (void **state)
   assert_int_equal (collide_polygons_sat (&a, place (0, 0, 0), &b, place (1.02, 0, 0), 0.01, &m), 0);
 }
 
+/* A convex regular n-gon of circumradius r turned by phase. */
+static convex_piece make_ngon_piece (int n, double r, double phase, vec2 *v, vec2 *nrm)
+{
+  convex_piece p;
+  int i;
+  memset (&p, 0, sizeof p);
+  for (i = 0; i < n; ++i)
+    v[i] = v2 (r * cos (phase + 2 * M_PI * i / n), r * sin (phase + 2 * M_PI * i / n));
+  for (i = 0; i < n; ++i)
+    nrm[i] = v2_normalize (v2_neg (v2_perp (v2_sub (v[(i + 1) % n], v[i]))));
+  p.count = n, p.vertices = v, p.normals = nrm, p.center = v2 (0, 0), p.bound_radius = r;
+  return p;
+}
+
+/* A uniform double in [0, 1) from a 64-bit LCG. */
+static double uniform (uint64_t *seed)
+{
+  *seed = *seed * 6364136223846793005ull + 1442695040888963407ull;
+  return (double) (*seed >> 11) * 0x1p-53;
+}
+
+/* Convex pieces that overlap or touch are a contact whatever the margin
+ * (a speculative margin can be many times a small piece's size): 20000
+ * random pairs of regular 3- to 8-gons, sizes 0.1 to 2.1, placed to
+ * overlap, touch or stand apart, margins 0 to twice the larger size.
+ * Every pair whose separation (the largest over the edge normals) is at
+ * most 0 has a point, and every point is within the margin. */
+static void test_sat_overlapping_pieces_are_always_a_contact (void **state)
+{
+  uint64_t seed = 0x2545f4914f6cdd1dull;
+  int trial, overlapping = 0;
+  (void) state;
+  for (trial = 0; trial < 20000; ++trial)
+    {
+      vec2 va[8], na[8], vb[8], nb[8], axis;
+      int sa = 3 + (int) (uniform (&seed) * 6), sb = 3 + (int) (uniform (&seed) * 6), k;
+      double ra = 0.1 + 2.0 * uniform (&seed), rb = 0.1 + 2.0 * uniform (&seed);
+      convex_piece a = make_ngon_piece (sa, ra, uniform (&seed), va, na);
+      convex_piece b = make_ngon_piece (sb, rb, uniform (&seed), vb, nb);
+      double dir = 2 * M_PI * uniform (&seed), dist = (ra + rb) * (0.2 + 0.9 * uniform (&seed));
+      double margin = 4.0 * (ra > rb ? ra : rb) * uniform (&seed) * uniform (&seed);
+      xform xa = place (uniform (&seed), uniform (&seed), 2 * M_PI * uniform (&seed));
+      xform xb = place (xa.p.x + dist * cos (dir), xa.p.y + dist * sin (dir), 2 * M_PI * uniform (&seed));
+      manifold m;
+      int n = collide_polygons_sat (&a, xa, &b, xb, margin, &m);
+      double s = polygons_separation (&a, xa, &b, xb, &axis);
+      for (k = 0; k < n; ++k)
+        if (!(-m.points[k].depth <= margin))
+          fail_msg ("trial %d: a point %.17g apart, beyond the margin %.17g", trial, -m.points[k].depth, margin);
+      if (s > 0.0)
+        continue;
+      overlapping++;
+      if (n == 0)
+        fail_msg ("trial %d: %d-gon r %.17g and %d-gon r %.17g overlap by %.17g, margin %.17g: no contact", trial, sa,
+                  ra, sb, rb, -s, margin);
+    }
+  assert_true (overlapping > 5000);
+}
+
 /* A body deep inside another still gets a unit normal. */
 static void test_sat_deep_inside_has_unit_normal (void **state)
 {
@@ -465,6 +524,7 @@ int main (void)
     cmocka_unit_test (test_sat_face_contact_has_two_clipped_points),
     cmocka_unit_test (test_sat_rotated_corner),
     cmocka_unit_test (test_sat_separated_touching_margin),
+    cmocka_unit_test (test_sat_overlapping_pieces_are_always_a_contact),
     cmocka_unit_test (test_sat_deep_inside_has_unit_normal),
     cmocka_unit_test (test_circles),
     cmocka_unit_test (test_equal_masses_head_on_swap_velocities),
