@@ -785,8 +785,8 @@ static int takes_impact (const contact_point *p)
  * t), within mu lambda. It slows the slip and never reverses it, so it
  * takes energy and never gives any; the sub-steps after it brake a slip
  * that is left by mu times their own normal impulses, as for any contact.
- * Without it a box that lands sliding on a slope would keep all of its
- * speed along it, where the landing's friction brakes it or stops it. */
+ * (Impact events are bouncy contacts' only.) Without it a ball bouncing off
+ * a rough floor would keep its whole slip and gain no spin. */
 static void impact_friction (contact *k, solver_body *a, solver_body *b, const step_context *ctx, double t,
                              const double *lambda)
 {
