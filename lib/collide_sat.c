@@ -58,8 +58,12 @@ double polygons_separation (const convex_piece *a, xform xa, const convex_piece 
  * as far as a fast body travels (continuous collision) can be many times a
  * piece's size, and a tenth of it would prefer a face that lies beside the
  * other piece, where clipping leaves no point: overlapping pieces would
- * then have no contact (test_sat_overlapping_pieces_are_always_a_contact). */
+ * then have no contact (test_sat_pieces_within_the_margin_are_always_a_contact). */
 #define SAT_FACE_HYSTERESIS 0.005
+
+/* The feature of a corner contact (corner_contact): bits 16 to 29 all set,
+ * which no reference edge's are. */
+#define CORNER_FEATURE 0x3fff0000u
 
 typedef struct clip_vertex {
   vec2 v;
@@ -89,6 +93,75 @@ static int clip_segment (clip_vertex out[2], const clip_vertex in[2], vec2 n, do
       count++;
     }
   return count;
+}
+
+/* The point of segment [p, q] nearest to x. */
+static vec2 nearest_on_segment (vec2 p, vec2 q, vec2 x)
+{
+  vec2 d = v2_sub (q, p);
+  double len2 = v2_dot (d, d), u = len2 > 0.0 ? v2_dot (v2_sub (x, p), d) / len2 : 0.0;
+  return v2_mad (p, u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u), d);
+}
+
+/* The nearest pair of points of a vertex of one piece and an edge of the
+ * other, over both ways round: *pa on a, *pb on b, their squared distance
+ * returned; *feature names the vertex, the edge and whose vertex it was. */
+static double nearest_corner (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *pa, vec2 *pb,
+                              uint32_t *feature)
+{
+  double best = INFINITY;
+  int side, i, j;
+  for (side = 0; side < 2; ++side)
+    {
+      const convex_piece *v = side ? b : a, *e = side ? a : b;
+      xform xv = side ? xb : xa, xe = side ? xa : xb;
+      for (i = 0; i < v->count; ++i)
+        {
+          vec2 x = xform_apply (xv, v->vertices[i]);
+          for (j = 0; j < e->count; ++j)
+            {
+              vec2 c = nearest_on_segment (xform_apply (xe, e->vertices[j]),
+                                           xform_apply (xe, e->vertices[(j + 1) % e->count]), x);
+              double d2 = v2_len2 (v2_sub (c, x));
+              if (d2 < best)
+                {
+                  best = d2;
+                  *pa = side ? c : x;
+                  *pb = side ? x : c;
+                  *feature = CORNER_FEATURE | ((uint32_t) side << 30) | ((uint32_t) (i & 0xff) << 8)
+                             | (uint32_t) (j & 0xff);
+                }
+            }
+        }
+    }
+  return best;
+}
+
+/* Two pieces apart whose faces give no point (clipping leaves less than an
+ * edge: each piece's nearest vertex lies beside the other's face, corner
+ * towards corner) meet where they are nearest: one point there, the normal
+ * from a's nearest point to b's, if within the margin. The separating
+ * axis alone would let them pass each other's corners unseen, and a body
+ * closing fast on a corner would be met only once deep in it. Not for
+ * pieces with seams (seams.h), which meet only on their faces. */
+static int32_t corner_contact (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin,
+                               manifold *m)
+{
+  vec2 pa = v2 (0.0, 0.0), pb = v2 (0.0, 0.0);
+  uint32_t feature = 0u;
+  double d;
+  m->count = 0;
+  if (a->internal || b->internal)
+    return 0;
+  d = sqrt (nearest_corner (a, xa, b, xb, &pa, &pb, &feature));
+  if (!(d > 0.0) || d > margin)
+    return 0;
+  m->points[0].normal = v2_scale (v2_sub (pb, pa), 1.0 / d);
+  m->points[0].point = v2_scale (v2_add (pa, pb), 0.5);
+  m->points[0].depth = -d;
+  m->points[0].feature = feature;
+  m->count = 1;
+  return 1;
 }
 
 int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin, manifold *m)
@@ -153,11 +226,11 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
   v2_ = xform_apply (xref, ref->vertices[(ref_edge + 1) % ref->count]);
   tangent = v2_normalize (v2_sub (v2_, v1));
   side_tol = 1e-9 * v2_len (v2_sub (v2_, v1));
-  /* clip to the reference edge's two side planes */
-  if (clip_segment (clip1, seg, v2_neg (tangent), -v2_dot (tangent, v1), 0x8000u, side_tol) < 2)
-    return 0;
-  if (clip_segment (clip2, clip1, tangent, v2_dot (tangent, v2_), 0x8001u, side_tol) < 2)
-    return 0;
+  /* clip to the reference edge's two side planes; an incident edge that
+   * lies beside the reference edge meets the other piece at a corner */
+  if (clip_segment (clip1, seg, v2_neg (tangent), -v2_dot (tangent, v1), 0x8000u, side_tol) < 2
+      || clip_segment (clip2, clip1, tangent, v2_dot (tangent, v2_), 0x8001u, side_tol) < 2)
+    return (sep_a > 0.0 || sep_b > 0.0) ? corner_contact (a, xa, b, xb, margin, m) : 0;
   for (i = 0; i < 2; ++i)
     {
       double sep = v2_dot (n_ref, v2_sub (clip2[i].v, v1));
@@ -171,5 +244,7 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
       mp->depth = -sep;
       mp->feature = ((uint32_t) flip << 31) | ((uint32_t) (ref_edge & 0x7fff) << 16) | clip2[i].id;
     }
+  if (m->count == 0 && (sep_a > 0.0 || sep_b > 0.0))
+    return corner_contact (a, xa, b, xb, margin, m);
   return m->count;
 }
