@@ -35,10 +35,11 @@ static int batchable (const contact *k)
 
 /* Lane `lane` of batch c: contact k (index `index`), or, with k NULL, an
  * unused lane: the inert body on both sides and every number 0, so it
- * computes impulses of 0 and moves nothing. Every field of the lane is
- * written (the batches are not cleared between steps). */
+ * computes impulses of 0 and moves nothing. Every field of the lane the
+ * kernels read is written (the batches are not cleared between steps): the
+ * second point's only where the batch has two (points 2). */
 static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t index, const solver_body *sb,
-                       int32_t inert)
+                       int32_t inert, int points)
 {
   int j, n = k ? k->count : 0, block = k && k->block;
   const solver_body *a = k ? &sb[k->a] : NULL, *b = k ? &sb[k->b] : NULL;
@@ -63,7 +64,7 @@ static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t ind
   c->i12[lane] = invertible ? -k->k12 / det : 0.0;
   c->i22[lane] = invertible ? k->k11 / det : 0.0;
   c->block[lane] = invertible ? 1.0 : 0.0;
-  for (j = 0; j < 2; ++j)
+  for (j = 0; j < points; ++j)
     {
       batch_point *q = &c->p[j];
       if (j < n)
@@ -99,6 +100,13 @@ static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t ind
     }
 }
 
+/* The key a contact is packed by: its colour's two-point contacts, then its
+ * one-point ones. */
+static int32_t pack_key (const contact *k, int32_t colour)
+{
+  return 2 * colour + (k->count == 1);
+}
+
 void contact_batch_prepare (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
@@ -108,7 +116,7 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
   int32_t i, k, n = 0;
   int pass;
   (void) ctx;
-  for (i = 0; i <= 2 * CONSTRAINT_COLOURS; ++i)
+  for (i = 0; i <= 4 * CONSTRAINT_COLOURS; ++i)
     end[i] = 0;
   /* greedy, in list order: each contact takes the first colour free at
    * both of its moving bodies. Contacts with a body that does not move (the
@@ -136,31 +144,39 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
             {
               colour[i] += pass * CONSTRAINT_COLOURS;
               ct->batched = 1;
-              end[colour[i] + 1]++;
+              end[pack_key (ct, colour[i]) + 1]++;
             }
         }
     }
-  /* each colour's contacts in list order (a counting sort), four to a
-   * batch */
-  for (i = 0; i < 2 * CONSTRAINT_COLOURS; ++i)
+  /* each colour's contacts, two-point ones first, each kind in list order
+   * (a counting sort), four to a batch */
+  for (i = 0; i < 4 * CONSTRAINT_COLOURS; ++i)
     end[i + 1] += end[i];
   for (i = 0; i < c->count; ++i)
     if (colour[i] >= 0)
-      order[end[colour[i]]++] = i;
+      order[end[pack_key (&c->list[i], colour[i])]++] = i;
   for (k = 0, i = 0; k < 2 * CONSTRAINT_COLOURS; ++k)
     {
-      int lane = 0;
-      for (; i < end[k]; ++i)
+      int lane = 0, points = 0;
+      for (; i < end[2 * k + 1]; ++i)
         {
-          pack_lane (&world->batches[n], lane, &c->list[order[i]], order[i], sb, world->slot_count);
+          const contact *ct = &c->list[order[i]];
+          /* two-point contacts come first: the first lane's count is
+           * the batch's */
+          if (lane == 0)
+            points = ct->count;
+          pack_lane (&world->batches[n], lane, ct, order[i], sb, world->slot_count, points);
           if (++lane == BATCH_LANES)
-            ++n, lane = 0;
+            {
+              world->batches[n++].points = points;
+              lane = 0;
+            }
         }
       if (lane > 0)
         {
           for (; lane < BATCH_LANES; ++lane)
-            pack_lane (&world->batches[n], lane, NULL, -1, sb, world->slot_count);
-          ++n;
+            pack_lane (&world->batches[n], lane, NULL, -1, sb, world->slot_count, points);
+          world->batches[n++].points = points;
         }
     }
   world->batch_count = n;

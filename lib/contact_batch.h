@@ -12,7 +12,10 @@
  * bits. Bodies that do not move (static, asleep) take no colour: lanes only
  * read them, and unused lanes point at an inert body that takes nothing.
  * Contacts with such a body are coloured apart and solved after the others
- * (the ground last, so nothing undoes it within a pass).
+ * (the ground last, so nothing undoes it within a pass). Within a colour,
+ * two-point contacts are packed before one-point ones: the order within a
+ * colour changes no result, and a batch of one-point contacts alone takes
+ * half the work (a lane's unused second point would only add zeros).
  *
  * The rest (bouncy contacts, small bodies, contacts of more than two points,
  * and those a body with every colour taken leaves over) are solved after
@@ -51,6 +54,8 @@ typedef struct batch_point {
 typedef struct contact_batch {
   int32_t a[BATCH_LANES], b[BATCH_LANES]; /* solver bodies (the inert one in unused lanes) */
   int32_t contact[BATCH_LANES];           /* index in the contact list, -1 unused */
+  int32_t points;                         /* the most points of its lanes' contacts: with
+                                             1, the kernels leave p[1] alone */
   double im_a[BATCH_LANES], ii_a[BATCH_LANES], im_b[BATCH_LANES], ii_b[BATCH_LANES];
   double friction[BATCH_LANES], slop[BATCH_LANES], max_push[BATCH_LANES];
   double k11[BATCH_LANES], k12[BATCH_LANES], k22[BATCH_LANES]; /* the 2x2 matrix K */

@@ -16,7 +16,13 @@
  * eq. 3.23 with e = 0 per point, the 2x2 block of a two-point face, Coulomb
  * friction, and the split-impulse push-out. */
 
+/* The helpers are inlined into each pass, where the point count is a
+ * constant (1 or 2): each pass has a copy for each count. */
+#ifdef __GNUC__
+#define KERNEL_FN static inline __attribute__ ((always_inline)) KERNEL_ATTR
+#else
 #define KERNEL_FN static inline KERNEL_ATTR
+#endif
 
 typedef struct KERNEL (lanes) {
   wide vx, vy, w; /* velocity, or the push-out's pseudo-velocity */
@@ -238,53 +244,78 @@ KERNEL_FN void KERNEL (normal) (const contact_batch *c, KERNEL (lanes) *a, KERNE
     }
 }
 
+/* The normal impulses of a batch whose lanes have one point each: what
+ * KERNEL (normal) does on such lanes (none is a block), without the second
+ * point's zeros. */
+KERNEL_FN void KERNEL (normal1) (const contact_batch *c, KERNEL (lanes) *a, KERNEL (lanes) *b, const KERNEL (mass) *m,
+                                 const wide *bias, wide *x, wmask use)
+{
+  const batch_point *p0 = &c->p[0];
+  wide zero = W_SET1 (0.0);
+  wide n0x = W_LOAD (p0->nx), n0y = W_LOAD (p0->ny), r0a = W_LOAD (p0->rn_a), r0b = W_LOAD (p0->rn_b);
+  wide acc = W_MAX (W_SUB (x[0], W_MUL (W_LOAD (p0->normal_mass), W_ADD (KERNEL (speed) (a, b, n0x, n0y, r0a, r0b), bias[0]))), zero);
+  KERNEL (push) (a, b, m, n0x, n0y, r0a, r0b, W_SEL (use, W_SUB (acc, x[0]), zero));
+  x[0] = W_SEL (use, acc, x[0]);
+}
+
+/* The warm start of one batch of np-point lanes. */
+KERNEL_FN void KERNEL (warm_start_batch) (contact_batch *c, solver_body *sb, int np)
+{
+  KERNEL (lanes) a, b;
+  KERNEL (mass) m = KERNEL (masses) (c);
+  int j;
+  KERNEL (gather) (sb, c->a, &a, 0);
+  KERNEL (gather) (sb, c->b, &b, 0);
+  for (j = 0; j < np; ++j)
+    {
+      batch_point *p = &c->p[j];
+      wide nx = W_LOAD (p->nx), ny = W_LOAD (p->ny);
+      KERNEL (push) (&a, &b, &m, nx, ny, W_LOAD (p->rn_a), W_LOAD (p->rn_b), W_LOAD (p->normal_impulse));
+      W_STORE (p->total, W_ADD (W_LOAD (p->total), W_LOAD (p->normal_impulse)));
+      KERNEL (push) (&a, &b, &m, W_NEG (ny), nx, W_LOAD (p->rt_a), W_LOAD (p->rt_b), W_LOAD (p->tangent_impulse));
+    }
+  KERNEL (scatter) (sb, c->a, &a, 0);
+  KERNEL (scatter) (sb, c->b, &b, 0);
+}
+
 KERNEL_ATTR void KERNEL (contact_batch_warm_start) (contact_batch *c, int32_t n, solver_body *sb)
 {
   int32_t i;
-  int j;
   for (i = 0; i < n; ++i, ++c)
-    {
-      KERNEL (lanes) a, b;
-      KERNEL (mass) m = KERNEL (masses) (c);
-      KERNEL (gather) (sb, c->a, &a, 0);
-      KERNEL (gather) (sb, c->b, &b, 0);
-      for (j = 0; j < 2; ++j)
-        {
-          batch_point *p = &c->p[j];
-          wide nx = W_LOAD (p->nx), ny = W_LOAD (p->ny);
-          KERNEL (push) (&a, &b, &m, nx, ny, W_LOAD (p->rn_a), W_LOAD (p->rn_b), W_LOAD (p->normal_impulse));
-          W_STORE (p->total, W_ADD (W_LOAD (p->total), W_LOAD (p->normal_impulse)));
-          KERNEL (push) (&a, &b, &m, W_NEG (ny), nx, W_LOAD (p->rt_a), W_LOAD (p->rt_b), W_LOAD (p->tangent_impulse));
-        }
-      KERNEL (scatter) (sb, c->a, &a, 0);
-      KERNEL (scatter) (sb, c->b, &b, 0);
-    }
+    if (c->points > 1)
+      KERNEL (warm_start_batch) (c, sb, 2);
+    else
+      KERNEL (warm_start_batch) (c, sb, 1);
 }
 
 /* The separation of both points of a batch now (the solve's speculative
  * bias and the push-out's overlap both start from it). */
-KERNEL_FN void KERNEL (separations) (const contact_batch *c, const KERNEL (lanes) *a, const KERNEL (lanes) *b, wide *s)
+KERNEL_FN void KERNEL (separations) (const contact_batch *c, const KERNEL (lanes) *a, const KERNEL (lanes) *b, wide *s,
+                                     int np)
 {
   s[0] = KERNEL (separation) (a, b, &c->p[0]);
-  s[1] = KERNEL (separation) (a, b, &c->p[1]);
+  s[1] = np > 1 ? KERNEL (separation) (a, b, &c->p[1]) : W_SET1 (0.0);
 }
 
 /* One solve pass of a batch on its bodies' velocities a, b, the points
  * separated by s: the normal impulses, then friction. */
 KERNEL_FN void KERNEL (solve_lanes) (contact_batch *c, KERNEL (lanes) *a, KERNEL (lanes) *b, const KERNEL (mass) *m,
-                                     const wide *s, wide ih)
+                                     const wide *s, wide ih, int np)
 {
   wide zero = W_SET1 (0.0);
   wide bias[2], x[2], before[2], friction = W_LOAD (c->friction);
   int j;
-  for (j = 0; j < 2; ++j)
+  for (j = 0; j < np; ++j)
     {
       /* a speculative point may close its gap within the sub-step */
       bias[j] = W_SEL (M_GT (s[j], zero), W_MUL (s[j], ih), zero);
       x[j] = before[j] = W_LOAD (c->p[j].normal_impulse);
     }
-  KERNEL (normal) (c, a, b, m, bias, x, M_GE (zero, zero));
-  for (j = 0; j < 2; ++j)
+  if (np > 1)
+    KERNEL (normal) (c, a, b, m, bias, x, M_GE (zero, zero));
+  else
+    KERNEL (normal1) (c, a, b, m, bias, x, M_GE (zero, zero));
+  for (j = 0; j < np; ++j)
     {
       batch_point *p = &c->p[j];
       wide tx = W_NEG (W_LOAD (p->ny)), ty = W_LOAD (p->nx), rta = W_LOAD (p->rt_a), rtb = W_LOAD (p->rt_b);
@@ -302,12 +333,12 @@ KERNEL_FN void KERNEL (solve_lanes) (contact_batch *c, KERNEL (lanes) *a, KERNEL
  * points separated by s. Returns 0 where no lane had overlap to push out
  * nor a push so far (the bodies keep their pseudo-velocities). */
 KERNEL_FN int KERNEL (push_lanes) (contact_batch *c, KERNEL (lanes) *a, KERNEL (lanes) *b, const KERNEL (mass) *m,
-                                   const wide *s, wide rate, int first)
+                                   const wide *s, wide rate, int first, int np)
 {
   wide zero = W_SET1 (0.0), bias[2], x[2], slop = W_LOAD (c->slop), fastest = W_NEG (W_LOAD (c->max_push));
   wmask use = M_GT (zero, zero);
   int j;
-  for (j = 0; j < 2; ++j)
+  for (j = 0; j < np; ++j)
     {
       /* overlap beyond the slop, a fraction of it per sub-step, no faster
        * than max_push */
@@ -318,46 +349,67 @@ KERNEL_FN int KERNEL (push_lanes) (contact_batch *c, KERNEL (lanes) *a, KERNEL (
       use = M_OR (use, M_OR (M_LT (bias[j], zero), M_GT (x[j], zero)));
     }
   if (M_ANY (use))
-    KERNEL (normal) (c, a, b, m, bias, x, use);
-  W_STORE (c->p[0].push_impulse, x[0]);
-  W_STORE (c->p[1].push_impulse, x[1]);
+    {
+      if (np > 1)
+        KERNEL (normal) (c, a, b, m, bias, x, use);
+      else
+        KERNEL (normal1) (c, a, b, m, bias, x, use);
+    }
+  for (j = 0; j < np; ++j)
+    W_STORE (c->p[j].push_impulse, x[j]);
   return M_ANY (use);
+}
+
+/* One solve pass of one batch of np-point lanes. */
+KERNEL_FN void KERNEL (solve_batch) (contact_batch *c, solver_body *sb, wide ih, int np)
+{
+  KERNEL (lanes) a, b;
+  KERNEL (mass) m = KERNEL (masses) (c);
+  wide s[2];
+  KERNEL (gather) (sb, c->a, &a, 0);
+  KERNEL (gather) (sb, c->b, &b, 0);
+  KERNEL (separations) (c, &a, &b, s, np);
+  KERNEL (solve_lanes) (c, &a, &b, &m, s, ih, np);
+  KERNEL (scatter) (sb, c->a, &a, 0);
+  KERNEL (scatter) (sb, c->b, &b, 0);
 }
 
 KERNEL_ATTR void KERNEL (contact_batch_solve) (contact_batch *c, int32_t n, solver_body *sb, double inv_h)
 {
-  wide ih = W_SET1 (inv_h), s[2];
+  wide ih = W_SET1 (inv_h);
   int32_t i;
   for (i = 0; i < n; ++i, ++c)
-    {
-      KERNEL (lanes) a, b;
-      KERNEL (mass) m = KERNEL (masses) (c);
-      KERNEL (gather) (sb, c->a, &a, 0);
-      KERNEL (gather) (sb, c->b, &b, 0);
-      KERNEL (separations) (c, &a, &b, s);
-      KERNEL (solve_lanes) (c, &a, &b, &m, s, ih);
-      KERNEL (scatter) (sb, c->a, &a, 0);
-      KERNEL (scatter) (sb, c->b, &b, 0);
-    }
+    if (c->points > 1)
+      KERNEL (solve_batch) (c, sb, ih, 2);
+    else
+      KERNEL (solve_batch) (c, sb, ih, 1);
+}
+
+/* One push-out pass of one batch of np-point lanes. */
+KERNEL_FN void KERNEL (push_out_batch) (contact_batch *c, solver_body *sb, wide rate, int first, int np)
+{
+  KERNEL (lanes) a, b;
+  KERNEL (mass) m = KERNEL (masses) (c);
+  wide s[2];
+  KERNEL (gather) (sb, c->a, &a, 1);
+  KERNEL (gather) (sb, c->b, &b, 1);
+  KERNEL (separations) (c, &a, &b, s, np);
+  if (!KERNEL (push_lanes) (c, &a, &b, &m, s, rate, first, np))
+    return;
+  KERNEL (scatter) (sb, c->a, &a, 1);
+  KERNEL (scatter) (sb, c->b, &b, 1);
 }
 
 KERNEL_ATTR void KERNEL (contact_batch_push_out) (contact_batch *c, int32_t n, solver_body *sb, double push_rate,
                                                   int first)
 {
-  wide rate = W_SET1 (push_rate), s[2];
+  wide rate = W_SET1 (push_rate);
   int32_t i;
   for (i = 0; i < n; ++i, ++c)
-    {
-      KERNEL (lanes) a, b;
-      KERNEL (mass) m = KERNEL (masses) (c);
-      KERNEL (gather) (sb, c->a, &a, 1);
-      KERNEL (gather) (sb, c->b, &b, 1);
-      KERNEL (separations) (c, &a, &b, s);
-      if (!KERNEL (push_lanes) (c, &a, &b, &m, s, rate, first))
-        continue;
-      KERNEL (scatter) (sb, c->a, &a, 1);
-      KERNEL (scatter) (sb, c->b, &b, 1);
-    }
+    if (c->points > 1)
+      KERNEL (push_out_batch) (c, sb, rate, first, 2);
+    else
+      KERNEL (push_out_batch) (c, sb, rate, first, 1);
 }
 
 /* A solve pass and the sub-step's first push-out pass in one walk over the
@@ -365,29 +417,36 @@ KERNEL_ATTR void KERNEL (contact_batch_push_out) (contact_batch *c, int32_t n, s
  * the step began, which the solve leaves alone, so each batch is loaded
  * once, its separations computed once, and the results are those of the
  * two passes one after the other. */
+KERNEL_FN void KERNEL (solve_push_out_batch) (contact_batch *c, solver_body *sb, wide ih, wide rate, int np)
+{
+  KERNEL (lanes) a, b, pa, pb;
+  KERNEL (mass) m = KERNEL (masses) (c);
+  wide s[2];
+  KERNEL (gather) (sb, c->a, &a, 0);
+  KERNEL (gather) (sb, c->b, &b, 0);
+  /* the pseudo-velocities before the velocities are written back: a
+   * load overlapping a store just made would wait for it */
+  pa = a, pb = b;
+  KERNEL (gather_pseudo) (sb, c->a, &pa);
+  KERNEL (gather_pseudo) (sb, c->b, &pb);
+  KERNEL (separations) (c, &a, &b, s, np);
+  KERNEL (solve_lanes) (c, &a, &b, &m, s, ih, np);
+  KERNEL (scatter) (sb, c->a, &a, 0);
+  KERNEL (scatter) (sb, c->b, &b, 0);
+  if (!KERNEL (push_lanes) (c, &pa, &pb, &m, s, rate, 1, np))
+    return;
+  KERNEL (scatter) (sb, c->a, &pa, 1);
+  KERNEL (scatter) (sb, c->b, &pb, 1);
+}
+
 KERNEL_ATTR void KERNEL (contact_batch_solve_push_out) (contact_batch *c, int32_t n, solver_body *sb, double inv_h,
                                                         double push_rate)
 {
-  wide ih = W_SET1 (inv_h), rate = W_SET1 (push_rate), s[2];
+  wide ih = W_SET1 (inv_h), rate = W_SET1 (push_rate);
   int32_t i;
   for (i = 0; i < n; ++i, ++c)
-    {
-      KERNEL (lanes) a, b, pa, pb;
-      KERNEL (mass) m = KERNEL (masses) (c);
-      KERNEL (gather) (sb, c->a, &a, 0);
-      KERNEL (gather) (sb, c->b, &b, 0);
-      /* the pseudo-velocities before the velocities are written back: a
-       * load overlapping a store just made would wait for it */
-      pa = a, pb = b;
-      KERNEL (gather_pseudo) (sb, c->a, &pa);
-      KERNEL (gather_pseudo) (sb, c->b, &pb);
-      KERNEL (separations) (c, &a, &b, s);
-      KERNEL (solve_lanes) (c, &a, &b, &m, s, ih);
-      KERNEL (scatter) (sb, c->a, &a, 0);
-      KERNEL (scatter) (sb, c->b, &b, 0);
-      if (!KERNEL (push_lanes) (c, &pa, &pb, &m, s, rate, 1))
-        continue;
-      KERNEL (scatter) (sb, c->a, &pa, 1);
-      KERNEL (scatter) (sb, c->b, &pb, 1);
-    }
+    if (c->points > 1)
+      KERNEL (solve_push_out_batch) (c, sb, ih, rate, 2);
+    else
+      KERNEL (solve_push_out_batch) (c, sb, ih, rate, 1);
 }

@@ -130,7 +130,7 @@ int solver_reserve (carom_world *world)
          && mem_reserve (&world->allocator, (void **) &world->colour_used, &world->colour_cap, world->slot_count,
                          sizeof (uint32_t))
          && mem_reserve (&world->allocator, (void **) &world->batch_scratch, &world->batch_scratch_cap,
-                         2 * world->contacts.count + 2 * CONSTRAINT_COLOURS + 1, sizeof (int32_t))
+                         2 * world->contacts.count + 4 * CONSTRAINT_COLOURS + 1, sizeof (int32_t))
          && mem_reserve (&world->allocator, (void **) &world->solver_scratch, &world->scratch_cap, need,
                          sizeof (int32_t))
          && mem_reserve (&world->allocator, (void **) &world->cold_load, &world->cold_load_cap, world->slot_count,

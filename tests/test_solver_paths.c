@@ -77,10 +77,11 @@ static carom_world *pile (void)
 }
 
 /* In every batch the lanes' moving bodies are distinct (they are solved at
- * once), every batched contact sits in exactly one lane, and a contact left
- * out is one the batches do not take or one whose bodies used every
- * colour. */
-static void check_batches (const carom_world *w, int32_t *batched_total)
+ * once), every batched contact sits in exactly one lane, no lane's contact
+ * has more points than its batch solves, and a contact left out is one the
+ * batches do not take or one whose bodies used every colour. Counts the
+ * batches of one-point lanes alone in *single. */
+static void check_batches (const carom_world *w, int32_t *batched_total, int32_t *single)
 {
   const contacts *c = &w->contacts;
   int32_t i, lanes = 0, marked = 0;
@@ -88,6 +89,8 @@ static void check_batches (const carom_world *w, int32_t *batched_total)
   for (i = 0; i < w->batch_count; ++i)
     {
       const contact_batch *b = &w->batches[i];
+      assert_true (b->points == 1 || b->points == 2);
+      *single += b->points == 1;
       for (l = 0; l < BATCH_LANES; ++l)
         {
           int32_t body[2];
@@ -99,6 +102,7 @@ static void check_batches (const carom_world *w, int32_t *batched_total)
             }
           ++lanes;
           assert_true (c->list[b->contact[l]].batched);
+          assert_true (c->list[b->contact[l]].count <= b->points);
           body[0] = b->a[l], body[1] = b->b[l];
           for (m = l + 1; m < BATCH_LANES; ++m)
             {
@@ -121,17 +125,19 @@ static void check_batches (const carom_world *w, int32_t *batched_total)
 static void test_batches_are_properly_coloured (void **state)
 {
   carom_world *w = pile ();
-  int32_t step, batched = 0, leftover = 0;
+  int32_t step, batched = 0, leftover = 0, single = 0, batches = 0;
   (void) state;
   for (step = 0; step < 240; ++step)
     {
       assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
-      check_batches (w, &batched);
+      check_batches (w, &batched, &single);
       leftover += w->contacts.count;
+      batches += w->batch_count;
     }
   leftover -= batched;
-  /* both kinds happened */
+  /* both kinds of contact happened, and both kinds of batch */
   assert_true (batched > 1000 && leftover > 0);
+  assert_true (single > 100 && batches - single > 100);
   carom_world_destroy (w);
 }
 
