@@ -83,7 +83,7 @@ static double effective_mass (const solver_body *a, const solver_body *b, double
  * and the tangent. An inert direction also loses its lever arms and its
  * impulse: ii * (r x d) may itself overflow there, and inf * 0 in a push is
  * NaN. */
-static void point_masses (contact_point *p, const solver_body *a, const solver_body *b)
+ALWAYS_INLINE void point_masses (contact_point *p, const solver_body *a, const solver_body *b)
 {
   p->normal_mass = effective_mass (a, b, p->rn_a, p->rn_b);
   p->tangent_mass = effective_mass (a, b, p->rt_a, p->rt_b);
@@ -107,7 +107,7 @@ static vec2 separation_arm (const body *b, vec2 r)
  * reaches (rounding of far-apart coordinates can make it so for a tiny
  * body); a circle's normal impulse passes through its centre, so r x n is
  * exactly 0 there whatever the rounding of the point says. */
-static void lever_arms (contact_point *p, const body *ba, const body *bb, vec2 ra, vec2 rb)
+ALWAYS_INLINE void lever_arms (contact_point *p, const body *ba, const body *bb, vec2 ra, vec2 rb)
 {
   vec2 t = v2_perp (p->normal);
   double la = 2.0 * ba->shape.bound_radius + fabs (p->depth), lb = 2.0 * bb->shape.bound_radius + fabs (p->depth);

@@ -6,6 +6,15 @@
 
 #define CAROM_PI 3.14159265358979323846
 
+/* A helper inlined into its callers even where the compiler would not: for
+ * the few small functions of the per-contact loops whose vector arguments
+ * would otherwise go through memory at each call. */
+#ifdef __GNUC__
+#define ALWAYS_INLINE static inline __attribute__ ((always_inline))
+#else
+#define ALWAYS_INLINE static inline
+#endif
+
 typedef struct vec2 {
   double x, y;
 } vec2;
