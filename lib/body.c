@@ -68,9 +68,10 @@ void body_wake (body *b)
 }
 
 /* A circle or polygon shape's box, `center` its centre in the body frame. */
-static void part_box (const shape *s, vec2 center, xform t, vec2 *lo, vec2 *hi)
+ALWAYS_INLINE void part_box (const shape *s, vec2 center, xform t, vec2 *lo, vec2 *hi)
 {
   int32_t i;
+  vec2 l, h;
   if (s->kind == CAROM_SHAPE_CIRCLE)
     {
       vec2 c = xform_apply (t, center);
@@ -78,13 +79,17 @@ static void part_box (const shape *s, vec2 center, xform t, vec2 *lo, vec2 *hi)
       *hi = v2 (c.x + s->radius, c.y + s->radius);
       return;
     }
-  *lo = *hi = xform_apply (t, s->vertices[0]);
+  /* in locals: through lo and hi, which might alias the vertices as far
+   * as the compiler knows, every step would go through memory */
+  l = h = xform_apply (t, s->vertices[0]);
   for (i = 1; i < s->count; ++i)
     {
       vec2 v = xform_apply (t, s->vertices[i]);
-      *lo = v2_min (*lo, v);
-      *hi = v2_max (*hi, v);
+      l = v2_min (l, v);
+      h = v2_max (h, v);
     }
+  *lo = l;
+  *hi = h;
 }
 
 void body_sync (body *b)

@@ -215,11 +215,12 @@ void contact_batch_store (carom_world *world)
 
 /* ------------------------------------------------------------ the paths */
 
-/* The AVX2 kernels read a solver body's first ten doubles as rows of four
- * (contact_batch_kernel.h): v.x v.y w pv.x pv.y pw dp.x dp.y dq.c dq.s. */
+/* The AVX2 kernels read a solver body's first twelve doubles as three rows
+ * of four (contact_batch_kernel.h): v.x v.y w -, pv.x pv.y pw -, dp.x dp.y
+ * dq.c dq.s. */
 typedef char solver_body_layout[(offsetof (solver_body, v) == 0 && offsetof (solver_body, w) == 16
-                                 && offsetof (solver_body, pv) == 24 && offsetof (solver_body, pw) == 40
-                                 && offsetof (solver_body, dp) == 48 && offsetof (solver_body, dq) == 64
+                                 && offsetof (solver_body, pv) == 32 && offsetof (solver_body, pw) == 48
+                                 && offsetof (solver_body, dp) == 64 && offsetof (solver_body, dq) == 80
                                  && sizeof (rot2) == 16 && sizeof (vec2) == 16)
                                     ? 1
                                     : -1];

@@ -42,17 +42,18 @@ KERNEL_FN void KERNEL (transpose) (wide r0, wide r1, wide r2, wide r3, wide *c0,
   *c3 = _mm256_permute2f128_pd (t1, t3, 0x31);
 }
 
-/* solver_body begins v.x v.y w pv.x pv.y pw dp.x dp.y dq.c dq.s (checked in
- * contact_batch.c): velocities are the row at 0 (pseudo: at 3), the motion
- * since the step began the row at 6. */
+/* solver_body begins with three rows of four doubles, v.x v.y w -,
+ * pv.x pv.y pw -, dp.x dp.y dq.c dq.s (checked in contact_batch.c): the
+ * velocities are the row at 0 (pseudo: at 4), the motion since the step
+ * began the row at 8. */
 KERNEL_FN void KERNEL (gather) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o, int pseudo)
 {
   const double *b0 = &sb[idx[0]].v.x, *b1 = &sb[idx[1]].v.x, *b2 = &sb[idx[2]].v.x, *b3 = &sb[idx[3]].v.x;
-  int at = pseudo ? 3 : 0;
+  int at = pseudo ? 4 : 0;
   wide rest;
   KERNEL (transpose) (W_LOAD (b0 + at), W_LOAD (b1 + at), W_LOAD (b2 + at), W_LOAD (b3 + at), &o->vx, &o->vy, &o->w,
                       &rest);
-  KERNEL (transpose) (W_LOAD (b0 + 6), W_LOAD (b1 + 6), W_LOAD (b2 + 6), W_LOAD (b3 + 6), &o->px, &o->py, &o->qc,
+  KERNEL (transpose) (W_LOAD (b0 + 8), W_LOAD (b1 + 8), W_LOAD (b2 + 8), W_LOAD (b3 + 8), &o->px, &o->py, &o->qc,
                       &o->qs);
 }
 
@@ -61,19 +62,20 @@ KERNEL_FN void KERNEL (gather) (const solver_body *sb, const int32_t *idx, KERNE
 KERNEL_FN void KERNEL (gather_pseudo) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o)
 {
   wide rest;
-  KERNEL (transpose) (W_LOAD (&sb[idx[0]].v.x + 3), W_LOAD (&sb[idx[1]].v.x + 3), W_LOAD (&sb[idx[2]].v.x + 3),
-                      W_LOAD (&sb[idx[3]].v.x + 3), &o->vx, &o->vy, &o->w, &rest);
+  KERNEL (transpose) (W_LOAD (&sb[idx[0]].v.x + 4), W_LOAD (&sb[idx[1]].v.x + 4), W_LOAD (&sb[idx[2]].v.x + 4),
+                      W_LOAD (&sb[idx[3]].v.x + 4), &o->vx, &o->vy, &o->w, &rest);
 }
 
-/* Lanes write back in order, the fourth double of each row as it was; a
- * body that two lanes share does not move (it has no colour), and both
- * write its unchanged velocity. */
+/* Lanes write back in order, the fourth double of each row 0; a body that
+ * two lanes share does not move (it has no colour), and both write its
+ * unchanged velocity. */
 KERNEL_FN void KERNEL (scatter) (solver_body *sb, const int32_t *idx, const KERNEL (lanes) *o, int pseudo)
 {
   double *b0 = &sb[idx[0]].v.x, *b1 = &sb[idx[1]].v.x, *b2 = &sb[idx[2]].v.x, *b3 = &sb[idx[3]].v.x;
-  int at = pseudo ? 3 : 0;
-  wide fourth = _mm256_set_pd (b3[at + 3], b2[at + 3], b1[at + 3], b0[at + 3]), r0, r1, r2, r3;
-  KERNEL (transpose) (o->vx, o->vy, o->w, fourth, &r0, &r1, &r2, &r3);
+  int at = pseudo ? 4 : 0;
+  wide r0, r1, r2, r3;
+  /* the row's fourth double is unused */
+  KERNEL (transpose) (o->vx, o->vy, o->w, _mm256_setzero_pd (), &r0, &r1, &r2, &r3);
   W_STORE (b0 + at, r0);
   W_STORE (b1 + at, r1);
   W_STORE (b2 + at, r2);

@@ -38,7 +38,7 @@
  * enough for one pass cost nothing more. */
 #define SOLVE_MAX_ITERATIONS 32
 
-/* The solver's compact copy of what it reads and writes per body (80 bytes
+/* The solver's compact copy of what it reads and writes per body (128 bytes
  * instead of the whole body), gathered before the sub-steps and written back
  * after: the passes touch each body many times. */
 static void gather (carom_world *world)
@@ -57,6 +57,7 @@ static void gather (carom_world *world)
       sb[i].dp = v2 (0.0, 0.0);
       sb[i].pv = v2 (0.0, 0.0);
       sb[i].pw = 0.0;
+      sb[i].row_end_v = sb[i].row_end_pv = 0.0;
       sb[i].dq.c = 1.0, sb[i].dq.s = 0.0;
       sb[i].da = 0.0;
       sb[i].im = moves == MOVES_DYNAMIC ? b->inv_mass : 0.0;

@@ -42,11 +42,19 @@ typedef struct impact_shift {
 #define CONSTRAINED_JOINT 8 /* a joint holds it (joint_solver.c, gravity.c) */
 
 typedef struct solver_body {
+  /* three rows of four doubles, which the AVX2 batch kernels load and
+   * store whole (contact_batch_kernel.h): the velocities, the
+   * pseudo-velocities and the motion since the step began. A row never
+   * overlaps another, so a row just stored is read back without waiting
+   * (a load that overlaps part of a recent store stalls until it is
+   * written). */
   vec2 v;
   double w;
+  double row_end_v;  /* unused */
   vec2 pv;       /* push-out pseudo-velocity of this sub-step: it moves the
                     body, then is dropped (split impulses: no energy) */
   double pw;
+  double row_end_pv; /* unused */
   vec2 dp;       /* displacement of the centre of mass since the step began */
   rot2 dq;       /* rotation since the step began (for the constraints) */
   double da;     /* the same rotation as an angle (for the body) */
