@@ -10,36 +10,35 @@ static double max_separation (const convex_piece *p, xform xp, const convex_piec
                               int32_t *edge, double *outer, int32_t *outer_edge)
 {
   xform rel = xform_relative (xq, xp); /* p in q's frame */
-  double best = -INFINITY;
-  int32_t i, j;
-  *edge = 0;
-  *outer = -INFINITY;
-  *outer_edge = -1;
+  double best = -INFINITY, out = -INFINITY;
+  int32_t i, j, best_edge = 0, out_edge = -1;
+  /* the running bests in locals, updated by selects: which edge wins is
+   * not predictable, and through the pointers every edge would store and
+   * reload them */
   for (i = 0; i < p->count; ++i)
     {
       vec2 n = rot2_apply (rel.q, p->normals[i]);
       double offset = v2_dot (n, xform_apply (rel, p->vertices[i]));
       double s = INFINITY;
+      int take;
       for (j = 0; j < q->count; ++j)
         {
           double d = v2_dot (n, q->vertices[j]);
-          if (d < s)
-            s = d;
+          s = d < s ? d : s;
         }
       s -= offset;
-      if (s > *outer && !piece_edge_internal (p, i))
-        {
-          *outer = s;
-          *outer_edge = i;
-        }
-      if (s > best)
-        {
-          best = s;
-          *edge = i;
-          if (best > margin)
-            break; /* a separating axis: no contact, the rest cannot matter */
-        }
+      take = (s > out) & !piece_edge_internal (p, i);
+      out = take ? s : out;
+      out_edge = take ? i : out_edge;
+      take = s > best;
+      best = take ? s : best;
+      best_edge = take ? i : best_edge;
+      if (best > margin)
+        break; /* a separating axis: no contact, the rest cannot matter */
     }
+  *edge = best_edge;
+  *outer = out;
+  *outer_edge = out_edge;
   return best;
 }
 
