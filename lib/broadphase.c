@@ -21,6 +21,7 @@ void broadphase_destroy (carom_world *world)
   mem_free (&world->allocator, bp->cell_items, (size_t) bp->items_cap * sizeof (int32_t));
   mem_free (&world->allocator, bp->cell_fill, (size_t) bp->fill_cap * sizeof (int32_t));
   mem_free (&world->allocator, bp->reach, (size_t) bp->reach_cap * sizeof (double));
+  mem_free (&world->allocator, bp->hits, (size_t) bp->hits_cap * sizeof (int32_t));
   memset (bp, 0, sizeof *bp);
 }
 
@@ -136,7 +137,8 @@ static int reserve_entries (carom_world *world)
   return mem_reserve (&world->allocator, (void **) &bp->entries, &bp->cap, world->live_count, sizeof (sweep_entry))
          && mem_reserve (&world->allocator, (void **) &bp->scratch, &bp->scratch_cap, world->live_count,
                          sizeof (sweep_entry))
-         && mem_reserve (&world->allocator, (void **) &bp->reach, &bp->reach_cap, world->slot_count, sizeof (double));
+         && mem_reserve (&world->allocator, (void **) &bp->reach, &bp->reach_cap, world->slot_count, sizeof (double))
+         && mem_reserve (&world->allocator, (void **) &bp->hits, &bp->hits_cap, world->live_count, sizeof (int32_t));
 }
 
 int broadphase_sweep (carom_world *world, const step_context *ctx, pair_callback fn, void *user)
@@ -170,15 +172,19 @@ int broadphase_sweep (carom_world *world, const step_context *ctx, pair_callback
   for (i = 0; i < n; ++i)
     {
       /* a copy, and a pointer walk: the compiler cannot tell that fn leaves
-       * the entries alone, and this loop runs for every nearby pair */
+       * the entries alone, and this loop runs for every nearby pair. The
+       * overlaps are noted without a branch (whether two boxes in the
+       * window overlap is not predictable), then reported. */
       const sweep_entry e = bp->entries[i];
       const sweep_entry *f, *end = bp->entries + n;
+      int32_t hits = 0, k;
       for (f = &bp->entries[i + 1]; f < end && f->lo <= e.hi; ++f)
         {
-          if (f->lo2 > e.hi2 || f->hi2 < e.lo2 || (e.is_static && f->is_static))
-            continue;
-          fn (world, e.slot, f->slot, user);
+          bp->hits[hits] = f->slot;
+          hits += (f->lo2 <= e.hi2) & (f->hi2 >= e.lo2) & !(e.is_static & f->is_static);
         }
+      for (k = 0; k < hits; ++k)
+        fn (world, e.slot, bp->hits[k], user);
     }
   return 1;
 }
@@ -307,11 +313,18 @@ int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback 
       for (i = first; i < last; ++i)
         {
           const sweep_entry *p = &e[bp->cell_items[i]];
+          int32_t hits = 0, h;
+          /* the overlaps noted without a branch, as in the sweep */
           for (j = i + 1; j < last; ++j)
             {
               const sweep_entry *q = &e[bp->cell_items[j]];
-              if (q->lo > p->hi || q->hi < p->lo || q->lo2 > p->hi2 || q->hi2 < p->lo2 || (p->is_static && q->is_static))
-                continue;
+              bp->hits[hits] = bp->cell_items[j];
+              hits += (q->lo <= p->hi) & (q->hi >= p->lo) & (q->lo2 <= p->hi2) & (q->hi2 >= p->lo2)
+                      & !(p->is_static & q->is_static);
+            }
+          for (h = 0; h < hits; ++h)
+            {
+              const sweep_entry *q = &e[bp->hits[h]];
               /* reported by the cell of the overlap's low corner only */
               if (grid_cell (fmax (p->lo, q->lo), g.u0, g.size, g.nu)
                       + g.nu * grid_cell (fmax (p->lo2, q->lo2), g.v0, g.size, g.nv)

@@ -29,6 +29,8 @@ typedef struct sweep_entry {
 typedef struct broadphase {
   sweep_entry *entries, *scratch;
   int32_t count, cap, scratch_cap;
+  int32_t *hits;     /* the sweep's overlapping entries of one entry */
+  int32_t hits_cap;
   int32_t *cell_start, *cell_items, *cell_fill; /* the grid's cells */
   int32_t cell_cap, items_cap, fill_cap;
   double *reach;     /* per slot, this detection's body_reach_uncapped
