@@ -65,20 +65,14 @@ rot2 rot2_from_angle (double angle)
   k = (double) n;
   r = ((angle - k * PIO2_1) - k * PIO2_2) - k * PIO2_3;
   c = cos_reduced (r), s = sin_reduced (r);
-  switch (n & 3) /* k mod 4 (two's complement: -1 & 3 is 3) */
-    {
-    case 0:
-      q.c = c, q.s = s;
-      break;
-    case 1:
-      q.c = -s, q.s = c;
-      break;
-    case 2:
-      q.c = -c, q.s = -s;
-      break;
-    default:
-      q.c = s, q.s = -c;
-      break;
-    }
+  /* turned by k quarter turns, k mod 4 (two's complement: -1 & 3 is 3):
+   * (c, s), (-s, c), (-c, -s), (s, -c), by selects (a body's quadrant
+   * is not predictable) */
+  {
+    int odd = (int) (n & 1), neg_c = (int) ((n + 1) & 2), neg_s = (int) (n & 2);
+    double qc = odd ? s : c, qs = odd ? c : s;
+    q.c = neg_c ? -qc : qc;
+    q.s = neg_s ? -qs : qs;
+  }
   return q;
 }

@@ -16,8 +16,14 @@ int32_t constraint_colour (uint32_t *used_a, uint32_t *used_b)
   int32_t colour = 0;
   if (taken == 0xffffffffu)
     return -1;
+  /* the lowest clear bit */
+#ifdef __GNUC__
+  colour = __builtin_ctz (~taken);
+  bit = 1u << colour;
+#else
   for (bit = 1u; taken & bit; bit <<= 1)
     ++colour;
+#endif
   if (used_a)
     *used_a |= bit;
   if (used_b)

@@ -184,10 +184,11 @@ static void constrain_bodies (const contact *k, const contact_point *p, solver_b
  * once, and then overflow. */
 static void rescale_warm_start (contact_point *p, double old_nm, double old_tm)
 {
-  if (p->normal_mass < old_nm)
-    p->normal_impulse *= p->normal_mass / old_nm;
-  if (p->tangent_mass < old_tm)
-    p->tangent_impulse *= p->tangent_mass / old_tm;
+  /* by selects: whether a mass fell by a rounding or rose is not
+   * predictable (the quotient not taken may be inf or NaN, and is unused) */
+  double sn = p->normal_mass / old_nm, st = p->tangent_mass / old_tm;
+  p->normal_impulse = p->normal_mass < old_nm ? p->normal_impulse * sn : p->normal_impulse;
+  p->tangent_impulse = p->tangent_mass < old_tm ? p->tangent_impulse * st : p->tangent_impulse;
 }
 
 /* The 2x2 matrix of a two-point contact: eq. 3.23's denominators and their
