@@ -48,36 +48,38 @@ typedef struct contact_point {
 } contact_point;
 
 typedef struct contact {
+  /* the first 64 bytes: what most passes over all the contacts read
+   * (colouring, packing, the levels, events) */
   int32_t a, b;               /* body slots */
   int32_t piece_a, piece_b;   /* convex pieces (or -1 for the whole outline) */
-  double restitution, friction;
-  double slop;                /* overlap left alone, from the bodies' sizes */
-  double max_push;            /* fastest push-out speed, from the bodies' radii */
+  int32_t count;
   int32_t first_point;        /* index of points[0] among all points */
+  contact_point *points;      /* its `count` points: those of its list's pool
+                                 from first_point on */
+  double restitution, friction;
   int32_t block;              /* two points solved as one 2x2 problem */
-  int32_t met;                /* pushed this step (its approach is measured) */
   int32_t fine;               /* its bodies fall more than the slop in a
                                  sub-step: solved until converged */
-  double k11, k12, k22;       /* its matrix (eq. 3.23's denominators and their coupling) */
-  xform computed_at;          /* b's pose in a's frame when the points were
-                                 last computed by the narrow phase */
-  int32_t reused;             /* this step's points are last step's, moved */
   int32_t batched;            /* solved in a batch this step (contact_batch.c) */
-  int32_t fresh;              /* last step had no contact of these pieces */
-  int32_t queued;             /* waiting in contact_impacts' work list */
-  double impact_at;           /* when its impact happens in the step (a seed
-                                 of contact_impacts) */
-  int32_t pending;            /* a seed contact_impacts has yet to take */
-  int32_t reimpacts;          /* times it was searched for a next touch */
-  int32_t event_round;        /* the last impact (seed) that acted on it */
-  double touch_at;            /* the moment `touches` was found for */
-  int32_t touches;            /* whether its pieces touch then (contact_impacts) */
   int32_t cold;               /* begins resting this step: fresh, near,
                                  neither closing nor leaving fast
                                  (contact_cold_start gives it an impulse) */
-  int32_t count;
-  contact_point *points;      /* its `count` points: those of its list's pool
-                                 from first_point on */
+  double slop;                /* overlap left alone, from the bodies' sizes */
+  double max_push;            /* fastest push-out speed, from the bodies' radii */
+  double k11, k12, k22;       /* its matrix (eq. 3.23's denominators and their coupling) */
+  int32_t met;                /* pushed this step (its approach is measured) */
+  int32_t reused;             /* this step's points are last step's, moved */
+  int32_t fresh;              /* last step had no contact of these pieces */
+  int32_t queued;             /* waiting in contact_impacts' work list */
+  xform computed_at;          /* b's pose in a's frame when the points were
+                                 last computed by the narrow phase */
+  double impact_at;           /* when its impact happens in the step (a seed
+                                 of contact_impacts) */
+  double touch_at;            /* the moment `touches` was found for */
+  int32_t pending;            /* a seed contact_impacts has yet to take */
+  int32_t reimpacts;          /* times it was searched for a next touch */
+  int32_t event_round;        /* the last impact (seed) that acted on it */
+  int32_t touches;            /* whether its pieces touch then (contact_impacts) */
 } contact;
 
 typedef struct contacts {
