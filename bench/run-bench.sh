@@ -578,7 +578,7 @@ machine. Against the engines measured in this run, carom is fastest on the gas
 (where it is also the one that keeps its energy, docs/accuracy.md) and on the
 rain, and level with Chipmunk on the pyramid (within a few percent either way
 from run to run on this shared machine: compare the rounds). Against Box2D v3's
-figures it is behind on the pyramid (about 2x) and the rain (about 3x), for
+figures it is behind on the pyramid (about 1.5x) and the rain (about 2x), for
 reasons the profile above shows:
 EOF
   fi
@@ -615,10 +615,19 @@ EOF
   then landed its far corner deeper than with no reuse at all: the
   default is what tests/test_manifold_reuse.c's tipping boxes allow.
 - **Time per instruction.** carom's records are double precision: a
-  contact point is 264 bytes, a batch lane 404, a solver body 112. Where
-  the contacts outgrow the caches (the rain's 6000 points), carom's ratio to
-  Box2D v3 in time is above its ratio in instructions (the summary against
-  the instructions per step above).
+  contact is 184 bytes and each of its points 280, a batch lane 406, a
+  solver body 128. Where the contacts outgrow the caches (the rain's 6000
+  points), carom's ratio to Box2D v3 in time is above its ratio in
+  instructions (the summary against the instructions per step above).
+  Branches that the data decide cost as much: cachegrind's branch
+  simulation (`valgrind --tool=cachegrind --branch-sim=yes` on
+  `bench_carom scene=rain warmup=0 steps=300`) counted 88k mispredicted
+  branches a rain step before the broad phase's window test, SAT's running
+  best, a rotation's quadrant, the search for a free colour and the warm
+  start's rescaling were made branch-free, and 57k after. A batch of
+  one-point contacts solves one point, not two (contact_batch.points);
+  small functions of the per-contact loops whose vector arguments went
+  through the stack (a store-forwarding stall at every call) are inlined.
 - **The broad phase** is a sort and sweep below 4096 bodies and a uniform
   grid above (the sweep's strip tests grow as n sqrt(n) in crowded worlds:
   the gas at 100k bodies went from 65 to 42 ms per step with the grid, one
