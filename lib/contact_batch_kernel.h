@@ -362,15 +362,24 @@ KERNEL_FN int KERNEL (push_lanes) (contact_batch *c, KERNEL (lanes) *a, KERNEL (
   return M_ANY (use);
 }
 
+/* A batch's bodies (their velocities, or pseudo-velocities) into a, b and
+ * its points' separations into s: what every pass starts from. Returns its
+ * masses. */
+KERNEL_FN KERNEL (mass) KERNEL (load_batch) (const contact_batch *c, const solver_body *sb, KERNEL (lanes) *a,
+                                             KERNEL (lanes) *b, wide *s, int pseudo, int np)
+{
+  KERNEL (gather) (sb, c->a, a, pseudo);
+  KERNEL (gather) (sb, c->b, b, pseudo);
+  KERNEL (separations) (c, a, b, s, np);
+  return KERNEL (masses) (c);
+}
+
 /* One solve pass of one batch of np-point lanes. */
 KERNEL_FN void KERNEL (solve_batch) (contact_batch *c, solver_body *sb, wide ih, int np)
 {
   KERNEL (lanes) a, b;
-  KERNEL (mass) m = KERNEL (masses) (c);
   wide s[2];
-  KERNEL (gather) (sb, c->a, &a, 0);
-  KERNEL (gather) (sb, c->b, &b, 0);
-  KERNEL (separations) (c, &a, &b, s, np);
+  KERNEL (mass) m = KERNEL (load_batch) (c, sb, &a, &b, s, 0, np);
   KERNEL (solve_lanes) (c, &a, &b, &m, s, ih, np);
   KERNEL (scatter) (sb, c->a, &a, 0);
   KERNEL (scatter) (sb, c->b, &b, 0);
@@ -391,11 +400,8 @@ KERNEL_ATTR void KERNEL (contact_batch_solve) (contact_batch *c, int32_t n, solv
 KERNEL_FN void KERNEL (push_out_batch) (contact_batch *c, solver_body *sb, wide rate, int first, int np)
 {
   KERNEL (lanes) a, b;
-  KERNEL (mass) m = KERNEL (masses) (c);
   wide s[2];
-  KERNEL (gather) (sb, c->a, &a, 1);
-  KERNEL (gather) (sb, c->b, &b, 1);
-  KERNEL (separations) (c, &a, &b, s, np);
+  KERNEL (mass) m = KERNEL (load_batch) (c, sb, &a, &b, s, 1, np);
   if (!KERNEL (push_lanes) (c, &a, &b, &m, s, rate, first, np))
     return;
   KERNEL (scatter) (sb, c->a, &a, 1);
