@@ -64,6 +64,9 @@ static int build (carom_world **world, const bench_scene *s, const bench_options
     }
   if (carom_world_init (world, &def) != CAROM_OK)
     return -1;
+  if ((o->sleep && carom_world_set_sleeping (*world, 1) != CAROM_OK)
+      || (o->continuous >= 0 && carom_world_set_continuous (*world, o->continuous) != CAROM_OK))
+    return -1;
   st = bench_carom_add_bodies (*world, s, ids, &failed);
   if (st != CAROM_OK)
     {

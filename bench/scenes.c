@@ -324,6 +324,7 @@ int bench_parse (bench_options *o, int argc, char **argv)
   strcpy (o->mode, "time");
   o->steps = 540;
   o->warmup = 60;
+  o->continuous = -1;
   for (i = 1; i < argc; ++i)
     {
       const char *a = argv[i], *eq = strchr (a, '=');
@@ -353,6 +354,8 @@ int bench_parse (bench_options *o, int argc, char **argv)
         num = &o->iterations;
       else if (k == 5 && strncmp (a, "sleep", 5) == 0)
         num = &o->sleep;
+      else if (k == 10 && strncmp (a, "continuous", 10) == 0)
+        num = &o->continuous;
       else
         goto usage;
       *num = atoi (eq + 1);
@@ -364,7 +367,7 @@ int bench_parse (bench_options *o, int argc, char **argv)
   return 0;
 usage:
   fprintf (stderr, "usage: %s [scene=pyramid|rain|gas|chains] [bodies=N] [steps=N] [warmup=N] [substeps=N] "
-                   "[iterations=N] [mode=time|mem|hash] [sleep=0|1]\n", argv[0]);
+                   "[iterations=N] [mode=time|mem|hash] [sleep=0|1] [continuous=0|1]\n", argv[0]);
   return -1;
 }
 

@@ -104,12 +104,14 @@ double bench_body_inertia (const bench_body *b);
  *   before the timed steps)  substeps=N iterations=N (0: engine default)
  *   mode=time|mem|hash (mem: carom only, counts allocated bytes; hash: carom
  *   only, a hash of the end state)
- *   sleep=0|1 (engines that can put resting bodies to sleep; default 0) */
+ *   sleep=0|1 (engines that can put resting bodies to sleep; default 0)
+ *   continuous=0|1 (carom only: continuous collision; default the library's) */
 typedef struct bench_options {
   char scene[16];
   int bodies, steps, warmup;
   int substeps, iterations;
   int sleep;
+  int continuous; /* -1: the library's default; 0 or 1: set */
   char mode[8];
 } bench_options;
 
