@@ -18,7 +18,7 @@ REPEATS=${ACCURACY_REPEATS:-3}
 RAW=$B/raw
 PLOT=$B/plot
 mkdir -p "$RAW" "$PLOT" "$(dirname "$OUT")"
-rm -f "$RAW"/*.txt "$PLOT"/*.dat
+rm -f "$RAW"/*.txt "$PLOT"/*.dat "$PLOT"/*.title
 START=$(date +%s)
 LOAD_START=$(cut -d' ' -f1-3 /proc/loadavg)
 
@@ -159,9 +159,9 @@ BEGIN {
   T["bounce"] = "Bounce height"
   D["bounce"] = "A circle (diameter 1) and a 1 × 1 box dropped flat from 2 (bottom above the ground) with e = 0.5: the top of the first bounce against e² h0 = 0.5 (the top is taken from the last rising state as y + v²/2g, so sampling adds nothing). Signed relative error."
   L["bounce"] = "circle_height:circle height,circle_err:circle error,box_height:box height,box_err:box error"
-  T["gas"] = "Kinetic energy drift (gas, e = 1)"
-  D["gas"] = "The bench\047s gas scene (500 polygons, e = 1, no friction, no gravity, closed walls): kinetic energy after 2000/60 s over the start, minus 1 (0 is exact)."
-  L["gas"] = "energy_drift:energy drift,escaped:escaped"
+  T["gas"] = "The elastic gas (e = 1): energy drift and overlap"
+  D["gas"] = "The bench\047s gas scene (500 polygons, e = 1, no friction, no gravity, closed walls): kinetic energy after 2000/60 s over the start, minus 1 (0 is exact). Penetration, as for the pyramid: the depth of every touching contact point at the end of every step over the smaller dynamic body\047s size, the maximum and the 99th percentile."
+  L["gas"] = "energy_drift:energy drift,pen_max:max penetration,pen_p99:99th pct penetration,escaped:escaped"
   T["momentum"] = "Momentum in free space"
   D["momentum"] = "200 polygons of the gas scene without its walls, their velocities turned towards the centre so that they pile up and collide many times (e = 0.5, friction 0.3, no gravity), 5 s. Linear momentum change over Σ m|v|; angular momentum (about the origin) change over Σ (m |x × v| + I |ω|), both at the start."
   L["momentum"] = "p_err:linear momentum error,l_err:angular momentum error"
@@ -244,16 +244,17 @@ END {
   }
 
   # ---- the needs: one error each, for the plot and the advice
-  NN = split ("collision:offcentre_err:off-centre collision velocity error;bounce:box_err:bounce height error (box);gas:energy_drift:gas energy drift (absolute) over 2000/60 s;pyramid:top_drift:pyramid top box moved / size (10 s);rain:pen_p99:rain 99th-pct penetration / size;ref_pyramid:rms:pyramid RMS distance from reference / size;pendulum:period_err_90:pendulum period error at 90 degrees (absolute);double_pendulum:energy_err:double pendulum largest energy error / budget;chain:swing_gap:heavy chain swinging, joint gaps / length", NEED, ";")
+  NN = split ("collision:offcentre_err:off-centre collision velocity error;bounce:box_err:bounce height error (box);gas:energy_drift:gas energy drift (absolute) over 2000/60 s;pyramid:top_drift:pyramid top box moved / size (10 s);rain:pen_p99:rain 99th-pct penetration / size;gas:pen_max:gas deepest penetration / size (2000/60 s);ref_pyramid:rms:pyramid RMS distance from reference / size;pendulum:period_err_90:pendulum period error at 90 degrees (absolute);double_pendulum:energy_err:double pendulum largest energy error / budget;chain:swing_gap:heavy chain swinging, joint gaps / length", NEED, ";")
   NNAME[1] = "Collisions that spin off right (off-centre impacts)"
   NNAME[2] = "Bounces of the right height"
   NNAME[3] = "Elastic scenes that keep their energy"
   NNAME[4] = "Stacks that stand still"
   NNAME[5] = "Piles without visible overlap"
-  NNAME[6] = "Trajectories close to the converged answer (stacks)"
-  NNAME[7] = "Pendulums that keep time (joints)"
-  NNAME[8] = "Jointed motion that keeps its energy"
-  NNAME[9] = "Joints that hold a heavy load"
+  NNAME[6] = "Gases without visible overlap"
+  NNAME[7] = "Trajectories close to the converged answer (stacks)"
+  NNAME[8] = "Pendulums that keep time (joints)"
+  NNAME[9] = "Jointed motion that keeps its energy"
+  NNAME[10] = "Joints that hold a heavy load"
   nknob = split ("substeps iterations position_correction slop manifold_tolerance narrow_phase continuous dt", KN, " ")
   for (n = 1; n <= NN; ++n) {
     split (NEED[n], f, ":"); m = f[1]; k = f[2]; title = f[3]
@@ -322,9 +323,11 @@ END {
 if command -v gnuplot >/dev/null 2>&1; then
   GP=$PLOT/accuracy.gp
   {
-    echo "set terminal pngcairo size 1500,1500 font 'sans,9'"
+    panels=$(ls "$PLOT"/need*.title | wc -l)
+    rows=$(((panels + 2) / 3))
+    echo "set terminal pngcairo size 1500,$((rows * 500)) font 'sans,9'"
     echo "set output '$PNG'"
-    echo "set multiplot layout 3,3 title 'carom: error against cost, one curve per knob (others at their defaults); presets and peers as labelled points'"
+    echo "set multiplot layout $rows,3 title 'carom: error against cost, one curve per knob (others at their defaults); presets and peers as labelled points'"
     echo "set logscale xy; set grid; set key top right font 'sans,7'; set format y '10^{%L}'"
     echo "set xlabel 'ms of wall time per 1/60 s simulated'"
     n=1
