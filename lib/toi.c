@@ -19,8 +19,16 @@
 
 #include "world.h"
 
-/* At most this many advancements, and this many regula falsi trials. */
+/* At most this many advancements, and this many regula falsi trials. With
+ * continuous collision (the world's, or a bullet's) the search goes on
+ * longer: a body that leaves an impact spinning fast creeps away from the
+ * touch, each advance bounded by its whole spin, so the gap grows only by
+ * a fixed factor per advance (about 1.13 for a body leaving at 2 m/s
+ * spinning at 40 rad/s); from the 1e-11 m just after the impact, 128
+ * advances reach 1e-4 m and give up, leaving a corner swinging in to the
+ * sub-steps (the elastic gas: 9 cm deep; 1024: it is found). */
 #define TOI_MAX_ADVANCES 128
+#define TOI_MAX_ADVANCES_SWEPT 1024
 /* The secant's trials each advancement: its point, then twice, four and
  * eight times as far. */
 #define TOI_SECANT_TRIALS 4
@@ -201,7 +209,7 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
   double reach_a = A->shape.bound_radius, reach_b = B->shape.bound_radius;
   double turn = fabs (a->w) * reach_a + fabs (b->w) * reach_b;
   double t = t_from, s = 0.0;
-  int i;
+  int i, advances = ctx->continuous || A->bullet || B->bullet ? TOI_MAX_ADVANCES_SWEPT : TOI_MAX_ADVANCES;
   p.world = world, p.k = k, p.a = a, p.b = b, p.ctx = ctx;
   p.shift_a = shifts ? &shifts[k->a] : NULL;
   p.shift_b = shifts ? &shifts[k->b] : NULL;
@@ -237,7 +245,7 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
           return t;
       }
   }
-  for (i = 0; i < TOI_MAX_ADVANCES; ++i)
+  for (i = 0; i < advances; ++i)
     {
       double first = closing_time (s, n, v2_mad (v, t, g), g, turn), second = reach_time (&p, t, n, ga, gb), sn;
       double tn = t + (second > first ? second : first);

@@ -747,6 +747,83 @@ static void test_impact_friction_is_coulombs (void **state)
       }
 }
 
+/* A closed box of 100 polygons (boxes, pentagons and triangles of size 0.5
+ * to 1, the gas of the benchmarks at a fifth of its count) thrown about at
+ * up to 5 m/s and spinning at up to 20 rad/s, e = 1, no friction, no
+ * gravity, continuous collision on, for 20 s. Fast-spinning bodies leave
+ * impacts creeping away from the touch and swing in corners that are none
+ * of their contacts' detected points: every one of those must be an impact
+ * at its own time, or the sub-steps take it up and the gas loses energy.
+ * The kinetic energy stays within 1e-9 of its start after every step (it
+ * lost 2.3e-4 while the time of impact gave up after 128 advancements and
+ * only the detected points' own approach said whether a pair could meet),
+ * and no contact is ever deeper than a fifth of the smallest side. */
+static double unit_random (uint64_t *seed)
+{
+  *seed = *seed * 6364136223846793005ULL + 1442695040888963407ULL;
+  return (double) (*seed >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static void test_elastic_gas_with_continuous_collision_keeps_its_energy (void **state)
+{
+  const double box = 14.0, smallest = 0.5;
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_body_def d;
+  carom_body_id ids[100];
+  uint64_t seed = 0x676173ULL;
+  double e0 = 0.0, worst_e = 0.0, deepest = 0.0;
+  int i, step;
+  (void) state;
+  carom_world_def_init (&def, sizeof def);
+  def.restitution = 1.0;
+  def.friction = 0.0;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
+  add_box (w, CAROM_STATIC, 0.0, -0.5 * box - 0.5, 0.0, box + 2.0, 1.0);
+  add_box (w, CAROM_STATIC, 0.0, 0.5 * box + 0.5, 0.0, box + 2.0, 1.0);
+  add_box (w, CAROM_STATIC, -0.5 * box - 0.5, 0.0, 0.0, 1.0, box + 2.0);
+  add_box (w, CAROM_STATIC, 0.5 * box + 0.5, 0.0, 0.0, 1.0, box + 2.0);
+  for (i = 0; i < 100; ++i)
+    {
+      double size = smallest + 0.5 * unit_random (&seed), a = 2.0 * M_PI * unit_random (&seed);
+      double speed = 5.0 * unit_random (&seed);
+      carom_body_def_init (&d, sizeof d);
+      d.x = -0.5 * box + 0.7 + 1.4 * (i % 10), d.y = -0.5 * box + 0.7 + 1.4 * (i / 10);
+      d.angle = 2.0 * M_PI * unit_random (&seed);
+      d.vx = speed * cos (a), d.vy = speed * sin (a);
+      d.spin = 40.0 * (unit_random (&seed) - 0.5);
+      if (i % 3 == 0)
+        assert_status (carom_world_add_box (w, &d, size, size, &ids[i]), CAROM_OK);
+      else if (i % 3 == 1)
+        assert_status (carom_world_add_regular (w, &d, 5, 0.6 * size, &ids[i]), CAROM_OK);
+      else
+        assert_status (carom_world_add_regular (w, &d, 3, size, &ids[i]), CAROM_OK);
+    }
+  for (step = -1; step < 1200; ++step)
+    {
+      double px, py, e;
+      int32_t c;
+      if (step >= 0)
+        assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
+      cluster_totals (w, ids, 100, &px, &py, &e);
+      if (step < 0)
+        e0 = e;
+      worst_e = fmax (worst_e, fabs (e / e0 - 1.0));
+      for (c = 0; c < carom_world_contact_count (w); ++c)
+        {
+          double depth;
+          assert_status (carom_world_get_contact (w, c, NULL, NULL, NULL, NULL, NULL, NULL, &depth), CAROM_OK);
+          deepest = fmax (deepest, depth);
+        }
+    }
+  carom_world_destroy (w);
+  print_message ("elastic gas, continuous: energy within %.3g, deepest contact %.3g of the smallest side\n", worst_e,
+                 deepest / smallest);
+  if (!(worst_e < 1e-9) || !(deepest < 0.2 * smallest))
+    fail_msg ("energy off by %.3g, deepest contact %.3g of the smallest side", worst_e, deepest / smallest);
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
@@ -760,6 +837,7 @@ int main (void)
     cmocka_unit_test (test_newtons_cradle_is_sequential),
     cmocka_unit_test (test_spinning_bar_leaves_a_wall_as_the_closed_form),
     cmocka_unit_test (test_impact_friction_is_coulombs),
+    cmocka_unit_test (test_elastic_gas_with_continuous_collision_keeps_its_energy),
   };
   return cmocka_run_group_tests_name ("impacts", tests, NULL, NULL);
 }
