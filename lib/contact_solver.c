@@ -244,7 +244,7 @@ static double closing_reach (vec2 v, vec2 n, const step_context *ctx)
  * their turning and their approach along the normal carry them: a fast
  * spinning body swings in a corner that is none of the detected points,
  * and the points' own estimate (their speed at the arms of the detection)
- * misses it (the elastic gas: 6 cm deep). Its pieces are polygons' convex
+ * misses it (the elastic gas: 5 cm deep). Its pieces are polygons' convex
  * pieces or circles (the time of impact follows their separation,
  * contact_separation_at). */
 static int impact_within_step (const carom_world *world, const contact *k, const solver_body *a,
