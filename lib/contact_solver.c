@@ -728,10 +728,15 @@ static double impact_threshold (const step_context *ctx, vec2 n)
 /* An impact of the step: a bouncy contact (e > 0) that closes faster than
  * resting contact ever does (impact_threshold), touching now (within
  * TOI_TOUCH: it meets at 0) or apart and meeting within the step (at its
- * earliest point's time of impact). */
+ * earliest point's time of impact). A contact with some point touching now
+ * and closing, however slowly, meets at 0 too: its pieces already touch,
+ * and until a later time of impact its bodies' flight (impact_shift) would
+ * carry that point on into the other body unchecked (a pentagon rocking on
+ * another body, one corner resting on it while the turn brings the next
+ * corner down within the step, sank the resting one 1.1 cm). */
 static int impact_seed (const contact *k, const step_context *ctx, double *at)
 {
-  int32_t j, seed = 0;
+  int32_t j, seed = 0, touching = 0;
   double t = ctx->dt;
   if (k->restitution == 0.0)
     return 0;
@@ -739,6 +744,7 @@ static int impact_seed (const contact *k, const step_context *ctx, double *at)
     {
       const contact_point *p = &k->points[j];
       double when;
+      touching |= p->normal_mass != 0.0 && p->depth >= -TOI_TOUCH * k->slop && p->approach < 0.0;
       if (p->normal_mass == 0.0 || !(p->approach < -impact_threshold (ctx, p->normal)))
         continue;
       if (p->depth < 0.0 && p->toi >= 0.0 && p->toi < ctx->dt)
@@ -750,7 +756,7 @@ static int impact_seed (const contact *k, const step_context *ctx, double *at)
       seed = 1;
       t = when < t ? when : t;
     }
-  *at = t;
+  *at = touching ? 0.0 : t;
   return seed;
 }
 
