@@ -83,6 +83,13 @@ static inline double body_reach (const body *b, double h, double accel, int cont
 }
 
 /* Whether two bodies' filters let them collide (carom_body_def). */
+/* Whether continuous collision applies to a pair of bodies: the world's
+ * (`continuous`), or either body is a bullet. */
+static inline int body_pair_swept (const body *a, const body *b, int continuous)
+{
+  return continuous || a->bullet || b->bullet;
+}
+
 static inline int body_filters_pass (const body *a, const body *b)
 {
   if (a->group != 0 && a->group == b->group)
