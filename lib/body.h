@@ -8,34 +8,42 @@
 #include "vec2.h"
 
 typedef struct body {
-  /* state: position of the centre of mass, angle, velocities */
+  /* The fields are in the order the step reads them, so that each stage
+   * touches few of the body's cache lines (64 bytes each): the first line
+   * is the state (the solver's gather and finish, detection's poses), the
+   * second what detection, the broad phase and the solver read of every
+   * body, the third the flags and filters of on_pair, the fourth the
+   * shape's own first line (shape.h). The rest is read rarely. */
+  /* state: position of the centre of mass, rotation, velocities, angle */
   vec2 p;
-  double angle;
   rot2 q;          /* cos and sin of angle, refreshed after each move */
   vec2 v;
   double w;
-  /* mass properties; statics have zero inverses and so never move */
-  double mass, inertia, inv_mass, inv_inertia;
-  double density;               /* as given (a compound's parts keep their own) */
+  double angle;
+  /* statics have zero inverses and so never move */
+  double inv_mass, inv_inertia;
+  vec2 box_lo, box_hi;          /* world-space bounding box */
   double restitution, friction; /* as given; < 0 means the world default */
   carom_body_type type;
   int32_t alive;
-  uint32_t generation;          /* part of the id; bumped on removal */
-  shape shape;
-  vec2 box_lo, box_hi;          /* world-space bounding box */
-  int32_t fixed_rotation; /* non-rotating: inv_inertia stays 0 */
-  int32_t bullet;         /* continuous collision even when the world's is off */
   int32_t asleep;         /* sleeping: zero inverse mass, not moved */
-  double sleep_time;      /* how long it has been slow enough to sleep */
-  /* what the program asked for (version 0.2) */
-  vec2 force;             /* over the next update (force.c) */
-  double torque;          /* about the centre of mass */
-  void *user_data;
+  int32_t bullet;         /* continuous collision even when the world's is off */
   uint32_t category, mask;
   int32_t group;
   int32_t sensor;         /* reports overlaps, takes part in no contact */
   int32_t joint_head;     /* its first joint, as joint.h's next[] (0: none) */
   int32_t joint_count;    /* how many joints it has */
+  uint32_t generation;          /* part of the id; bumped on removal */
+  int32_t fixed_rotation; /* non-rotating: inv_inertia stays 0 */
+  shape shape;
+  /* mass properties */
+  double mass, inertia;
+  double density;               /* as given (a compound's parts keep their own) */
+  double sleep_time;      /* how long it has been slow enough to sleep */
+  /* what the program asked for (version 0.2) */
+  vec2 force;             /* over the next update (force.c) */
+  double torque;          /* about the centre of mass */
+  void *user_data;
 } body;
 
 struct carom_world;

@@ -36,25 +36,26 @@ struct shape_part;
 /* A circle, a simple polygon, or a compound of several of them (its parts,
  * placed in the body's frame). */
 typedef struct shape {
+  /* first what detection reads of every body (one cache line) */
   carom_shape_kind kind;
-  double radius;        /* circles only */
   int32_t count;        /* polygon outline: vertex count */
+  int32_t piece_count;
+  int32_t part_count;   /* compounds only (below) */
+  double radius;        /* circles only */
+  double bound_radius;  /* max distance of any point from the centroid */
+  double size;          /* length scale 2 * area / perimeter, for tolerances
+                           (a compound's: its smallest part's) */
+  convex_piece *pieces;
   vec2 *vertices;       /* polygon outline, counter-clockwise, about centroid */
   vec2 *normals;        /* outline edge normals */
   int convex;           /* the outline is convex: one piece */
   int pieces_shared;    /* pieces[0] uses the outline's own arrays */
-  int32_t piece_count;
   int32_t piece_alloc;  /* pieces allocated (>= piece_count) */
-  convex_piece *pieces;
   double area;
   double unit_inertia;  /* moment of inertia about the centroid at density 1 */
-  double bound_radius;  /* max distance of any point from the centroid */
-  double size;          /* length scale 2 * area / perimeter, for tolerances
-                           (a compound's: its smallest part's) */
   /* compounds only: the parts, whose pieces `pieces` lists (sharing their
    * vertices), and the mass and inertia about the centroid of the union
    * at the parts' own densities */
-  int32_t part_count;
   struct shape_part *parts;
   double mass, inertia;
 } shape;
