@@ -615,7 +615,7 @@ EOF
   then landed its far corner deeper than with no reuse at all: the
   default is what tests/test_manifold_reuse.c's tipping boxes allow.
 - **Time per instruction.** carom's records are double precision: a
-  contact is 184 bytes and each of its points 280, a batch lane 406, a
+  contact is 184 bytes and each of its points 272, a batch lane 406, a
   solver body 128. Where the contacts outgrow the caches (the rain's 6000
   points), carom's ratio to Box2D v3 in time is above its ratio in
   instructions (the summary against the instructions per step above).

@@ -12,6 +12,10 @@ typedef struct contact_point {
   vec2 point, normal;   /* world frame at detection; normal from body a to body b */
   double depth;         /* penetration at detection (negative: apart) */
   uint32_t feature;
+  int32_t in_impact;    /* takes part in its contact's impact
+                           (contact_impacts): near at detection, meeting
+                           within the step, or of the touch (not a guard,
+                           contact_solver.c) */
   /* the contact constraint's data (contact_solver.c), fixed for the step */
   vec2 ra, rb;          /* from each centre of mass to the point */
   double rn_a, rn_b;    /* ra x n, rb x n */
@@ -32,11 +36,6 @@ typedef struct contact_point {
                                              restitution's) */
   double normal_moment, tangent_moment;   /* sum of impulse x time left in
                                              the step when applied */
-  int32_t in_impact;                      /* takes part in its contact's
-                                             impact (contact_impacts): near
-                                             at detection, meeting within
-                                             the step, or of the touch
-                                             (not a guard, contact_solver.c) */
   double impact_moment;                   /* sum of the impacts' impulses x
                                              their time into the step
                                              (contact_impacts) */
