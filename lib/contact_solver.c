@@ -1041,7 +1041,7 @@ void contact_impacts (carom_world *world, const step_context *ctx)
   if (n == 0)
     return;
   tol = RESTITUTION_TOLERANCE * fastest;
-  solver_contact_adjacency (world, &start, &adj);
+  solver_contact_adjacency (world, &start, &adj, NULL);
   while (head < n)
     {
       /* the impact, then the impacts it makes through the bodies it

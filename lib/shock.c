@@ -26,8 +26,8 @@ static int32_t order_by_level (carom_world *world, int32_t *order)
   const contacts *c = &world->contacts;
   const solver_body *sb = world->solver_bodies;
   int32_t n = world->slot_count, i, head = 0, tail = 0, count = 0;
-  int32_t *level = world->solver_scratch, *start, *adj, *queue;
-  solver_contact_adjacency (world, &start, &adj);
+  int32_t *level = world->solver_scratch, *start, *adj, *other, *queue;
+  solver_contact_adjacency (world, &start, &adj, &other);
   queue = adj + 2 * c->count;
   for (i = 0; i < n; ++i)
     {
@@ -43,8 +43,7 @@ static int32_t order_by_level (carom_world *world, int32_t *order)
       int32_t u = queue[head++], e;
       for (e = start[u]; e < start[u + 1]; ++e)
         {
-          const contact *k = &c->list[adj[e]];
-          int32_t v = k->a == u ? k->b : k->a;
+          int32_t v = other[e];
           if (level[v] < 0)
             {
               level[v] = level[u] + 1;

@@ -120,9 +120,9 @@ static void finish (carom_world *world)
 int solver_reserve (carom_world *world)
 {
   /* shock.c: levels, adjacency starts, queue and marks (or the cold
-   * start's supports) per body; adjacency (two per contact) and the level
-   * order per contact */
-  int32_t need = 4 * world->slot_count + 1 + 3 * world->contacts.count;
+   * start's supports) per body; adjacency (two per contact), the level
+   * order, and the adjacency's other bodies (two per contact) per contact */
+  int32_t need = 4 * world->slot_count + 1 + 5 * world->contacts.count;
   int32_t batches = world->contacts.count / BATCH_LANES + 2 * CONSTRAINT_COLOURS;
   return mem_reserve (&world->allocator, (void **) &world->solver_bodies, &world->solver_cap, world->slot_count + 1,
                       sizeof (solver_body))
@@ -173,11 +173,12 @@ void solver_destroy (carom_world *world)
   world->solver_cap = world->scratch_cap = world->restitution_cap = 0;
 }
 
-void solver_contact_adjacency (carom_world *world, int32_t **start_out, int32_t **adj_out)
+void solver_contact_adjacency (carom_world *world, int32_t **start_out, int32_t **adj_out, int32_t **other_out)
 {
   const contacts *c = &world->contacts;
   int32_t n = world->slot_count, i;
   int32_t *start = world->solver_scratch + n, *adj = start + n + 1;
+  int32_t *other = world->solver_scratch + 4 * n + 1 + 3 * c->count;
   for (i = 0; i <= n; ++i)
     start[i] = 0;
   for (i = 0; i < c->count; ++i)
@@ -189,14 +190,19 @@ void solver_contact_adjacency (carom_world *world, int32_t **start_out, int32_t 
     start[i + 1] += start[i];
   for (i = 0; i < c->count; ++i)
     {
-      adj[start[c->list[i].a]++] = i;
-      adj[start[c->list[i].b]++] = i;
+      int32_t a = c->list[i].a, b = c->list[i].b;
+      other[start[a]] = b;
+      adj[start[a]++] = i;
+      other[start[b]] = a;
+      adj[start[b]++] = i;
     }
   for (i = n; i > 0; --i)
     start[i] = start[i - 1];
   start[0] = 0;
   *start_out = start;
   *adj_out = adj;
+  if (other_out)
+    *other_out = other;
 }
 
 void solver_step (carom_world *world, const step_context *ctx)

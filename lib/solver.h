@@ -67,9 +67,11 @@ typedef struct solver_body {
  * any state changes in a step, so solver_step itself cannot fail. */
 int solver_reserve (struct carom_world *world);
 /* Each body's contacts: those of slot i are adj[start[i]] to
- * adj[start[i + 1] - 1] (in solver_scratch, which shock.c's levels also
- * use). */
-void solver_contact_adjacency (struct carom_world *world, int32_t **start, int32_t **adj);
+ * adj[start[i + 1] - 1], and other[e] is the body at the far end of
+ * contact adj[e] (so a walk over the graph need not read the contacts);
+ * in solver_scratch, which shock.c's levels also use. `other` may be
+ * NULL. */
+void solver_contact_adjacency (struct carom_world *world, int32_t **start, int32_t **adj, int32_t **other);
 /* One update: the sub-steps over the contacts found at its start. */
 void solver_step (struct carom_world *world, const step_context *ctx);
 void solver_destroy (struct carom_world *world);
