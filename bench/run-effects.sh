@@ -222,7 +222,7 @@ the active ones as bits of \`carom_effect\`; a scene file may name them with
 | fixed-rotation | a body that never turns (infinite inertia, spin 0) | \`carom_body_set_fixed_rotation (w, id, 1)\` | body option \`fixed\` | no body is fixed |
 | damping | velocities decay as exp(-linear t), spins as exp(-angular t) | \`carom_world_set_damping (w, linear, angular)\` | \`damping LINEAR [ANGULAR]\` | both rates are 0 |
 | sleeping | bodies at rest for half a second stop being simulated until touched | \`carom_world_set_sleeping (w, 1)\` | \`effects sleeping\` | by default |
-| continuous | contacts looked for as far ahead as the bodies can travel in the sub-step (otherwise 2% of a body's size, but for pieces in contact the step before that do not bounce): no tunnelling, impacts solved at their time within the step | \`carom_world_set_continuous (w, 1)\`, \`carom_body_set_bullet (w, id, 1)\` | \`continuous 1\`, \`effects continuous\`, body option \`bullet\` | by default |
+| continuous | contacts of every body looked for as far ahead as the bodies can close on each other in the step (otherwise only for bodies that move more than half their size in a step, which are always swept; others look 2% of their size ahead, but for pieces in contact the step before that do not bounce): no tunnelling, impacts solved at their time within the step | \`carom_world_set_continuous (w, 1)\`, \`carom_body_set_bullet (w, id, 1)\` | \`continuous 1\`, \`effects continuous\`, body option \`bullet\` | by default |
 
 Gravity (0, 0) and damping (0, 0) are *off* by definition (the stage returns at
 its first test), as is central gravity with gm = 0: there is no "on but zero"

@@ -68,36 +68,68 @@ static inline carom_body_id body_slot_id (const body *b, int32_t slot)
 }
 
 /* How far any point of the body can move in time h: (|v| + |w| R) h, plus
- * what an acceleration of magnitude `accel` (gravity) adds within h. Without
- * continuous collision (world off and not a bullet) contacts are looked for
- * no further ahead than 2% of the body's size, except between pieces that
- * were in contact the step before and do not bounce (contact.c,
- * pair_pieces). */
+ * what an acceleration of magnitude `accel` (gravity) adds within h. A body
+ * that is not swept (body_swept: the world's continuous collision off, not
+ * a bullet, not fast for its size) has its contacts looked for no further
+ * ahead than 2% of its size, except between pieces that were in contact the
+ * step before and do not bounce (contact.c, pair_pieces). */
 static inline double body_reach_uncapped (const body *b, double h, double accel)
 {
   return h * (v2_len (b->v) + fabs (b->w) * b->shape.bound_radius + (b->inv_mass > 0.0 ? accel * h : 0.0));
 }
 
-/* body_reach from its uncapped value r. */
-static inline double body_reach_capped (const body *b, double r, int continuous)
+/* A body moves fast when its own motion (its velocities, not gravity's
+ * fall) carries it further within a step than this fraction of its size:
+ * a contact it does not see at the detection could then be that deep by
+ * the next one, or be passed through (a card falling on a card). Fast
+ * bodies are swept (continuous collision) whether or not the world's is
+ * on; slow ones cost nothing more. */
+#define BODY_FAST_FRACTION 0.5
+
+/* Whether continuous collision applies to a body whose uncapped reach over
+ * the step dt is r (body_reach_uncapped): the world's (`continuous`), a
+ * bullet, or a body that moves fast. */
+static inline int body_swept (const body *b, double r, double dt, double accel, int continuous)
+{
+  double fall = b->inv_mass > 0.0 ? accel * dt * dt : 0.0;
+  return continuous || b->bullet || r - fall > BODY_FAST_FRACTION * b->shape.size;
+}
+
+/* Whether continuous collision applies to a pair of bodies in an update of
+ * dt: either is swept (the reach computed afresh, as the detection did;
+ * contact_pair_swept reads the detection's). */
+static inline int body_pair_swept (const body *a, const body *b, double dt, double accel, int continuous)
+{
+  return body_swept (a, body_reach_uncapped (a, dt, accel), dt, accel, continuous)
+         || body_swept (b, body_reach_uncapped (b, dt, accel), dt, accel, continuous);
+}
+
+/* body_reach from its uncapped value r, for a body that is swept or not. */
+static inline double body_reach_capped (const body *b, double r, int swept)
 {
   double cap = 0.02 * b->shape.size;
-  return continuous || b->bullet || r < cap ? r : cap;
+  return swept || r < cap ? r : cap;
+}
+
+/* How far two bodies can close on each other in time h: no point of one
+ * moves against any point of the other faster than |v_b - v_a| + |w_a| R_a
+ * + |w_b| R_b, and gravity adds at most accel h^2 (as body_reach_uncapped:
+ * both fall alike, or one does not fall). Never more than the sum of their
+ * body_reach_uncapped, and much less for bodies that fall together. */
+static inline double body_pair_reach (const body *a, const body *b, double h, double accel)
+{
+  double fall = a->inv_mass > 0.0 || b->inv_mass > 0.0 ? accel * h : 0.0;
+  return h * (v2_len (v2_sub (b->v, a->v)) + fabs (a->w) * a->shape.bound_radius
+              + fabs (b->w) * b->shape.bound_radius + fall);
 }
 
 static inline double body_reach (const body *b, double h, double accel, int continuous)
 {
-  return body_reach_capped (b, body_reach_uncapped (b, h, accel), continuous);
+  double r = body_reach_uncapped (b, h, accel);
+  return body_reach_capped (b, r, body_swept (b, r, h, accel, continuous));
 }
 
 /* Whether two bodies' filters let them collide (carom_body_def). */
-/* Whether continuous collision applies to a pair of bodies: the world's
- * (`continuous`), or either body is a bullet. */
-static inline int body_pair_swept (const body *a, const body *b, int continuous)
-{
-  return continuous || a->bullet || b->bullet;
-}
-
 static inline int body_filters_pass (const body *a, const body *b)
 {
   if (a->group != 0 && a->group == b->group)

@@ -32,7 +32,7 @@ static void fill_entry (broadphase *bp, sweep_entry *e, const body *b, int axis,
                         const step_context *ctx)
 {
   double r = body_reach_uncapped (b, ctx->dt, ctx->accel);
-  double m = slop * b->shape.size + body_reach_capped (b, r, ctx->continuous);
+  double m = slop * b->shape.size + body_reach_capped (b, r, body_swept (b, r, ctx->dt, ctx->accel, ctx->continuous));
   bp->reach[e->slot] = r;
   /* a sensor's box reaches as far as the fastest body can travel in the
    * update: what overlaps it at the end is among its pairs */

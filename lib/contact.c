@@ -619,6 +619,13 @@ static int can_move (const body *b)
   return b->inv_mass > 0.0 || body_kinematic_moving (b);
 }
 
+int contact_pair_swept (const carom_world *world, int32_t a, int32_t b, const step_context *ctx)
+{
+  const double *r = world->broad.reach;
+  return body_swept (&world->bodies[a], r[a], ctx->dt, ctx->accel, ctx->continuous)
+         || body_swept (&world->bodies[b], r[b], ctx->dt, ctx->accel, ctx->continuous);
+}
+
 static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
 {
   const step_context *ctx = user;
@@ -627,6 +634,7 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
   manifold m;
   xform xa, xb;
   int32_t i, j;
+  int swept;
   /* order: polygon before circle, else lower slot first, so the normal
    * convention of each narrow-phase test holds and the result does not
    * depend on the broad phase's order (with a compound: lower slot first,
@@ -656,8 +664,10 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
   pc.slop = world->def.slop * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   /* speculative margin: pairs that can close their gap within this step
    * are contacts now, so impacts are met before the bodies overlap */
-  pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], ctx->continuous || B->bullet)
-              + body_reach_capped (B, world->broad.reach[b], ctx->continuous || A->bullet);
+  swept = contact_pair_swept (world, a, b, ctx);
+  pc.margin = pc.slop
+              + (swept ? body_pair_reach (A, B, ctx->dt, ctx->accel)
+                       : body_reach_capped (A, world->broad.reach[a], 0) + body_reach_capped (B, world->broad.reach[b], 0));
   pc.margin_kept = pc.slop + world->broad.reach[a] + world->broad.reach[b];
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);

