@@ -253,7 +253,7 @@ static int impact_within_step (const carom_world *world, const contact *k, const
   const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
   /* how far the bodies' turning can carry their surfaces in the step */
   double turn = (fabs (a->w) * ba->shape.bound_radius + fabs (b->w) * bb->shape.bound_radius) * ctx->dt;
-  int swept = body_pair_swept (ba, bb, ctx->dt, ctx->accel, ctx->continuous);
+  int swept = -1; /* body_pair_swept, once needed (the detection's reach) */
   vec2 v = v2_sub (b->v, a->v);
   int32_t j, hits = 0;
   if (k->piece_a < 0 && k->piece_b < 0 && ba->shape.kind == CAROM_SHAPE_POLYGON)
@@ -266,6 +266,8 @@ static int impact_within_step (const carom_world *world, const contact *k, const
       hits |= p->approach < -ctx->restitution_threshold && p->toi >= 0.0 && p->toi < ctx->dt;
       /* a fast turn can bring another corner in, which the points' own
        * linear estimate does not see */
+      if (swept < 0)
+        swept = contact_pair_swept (world, k->a, k->b, ctx);
       hits |= -p->depth < turn + (swept ? closing_reach (v, p->normal, ctx) : 0.0);
     }
   return hits;
