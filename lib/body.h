@@ -79,11 +79,13 @@ static inline double body_reach_uncapped (const body *b, double h, double accel)
 }
 
 /* A body moves fast when its own motion (its velocities, not gravity's
- * fall) carries it further within a step than this fraction of its size:
- * a contact it does not see at the detection could then be that deep by
- * the next one, or be passed through (a card falling on a card). Fast
- * bodies are swept (continuous collision) whether or not the world's is
- * on; slow ones cost nothing more. */
+ * fall) carries it further within a step than this fraction of its size
+ * (Box2D v3 draws the same line). A slower body meets what it did not see
+ * at the detection at most that deep: about the distance from the centre
+ * of a convex body to its nearest side, so what it struck is pushed back
+ * the way it came. A faster one could cross a thinner body whole (a card
+ * falling on a card). Fast bodies are swept (continuous collision) whether
+ * or not the world's is on; slow ones cost nothing more. */
 #define BODY_FAST_FRACTION 0.5
 
 /* Whether continuous collision applies to a body whose uncapped reach over

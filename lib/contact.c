@@ -665,9 +665,11 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
   /* speculative margin: pairs that can close their gap within this step
    * are contacts now, so impacts are met before the bodies overlap */
   swept = contact_pair_swept (world, a, b, ctx);
-  pc.margin = pc.slop
-              + (swept ? body_pair_reach (A, B, ctx->dt, ctx->accel)
-                       : body_reach_capped (A, world->broad.reach[a], 0) + body_reach_capped (B, world->broad.reach[b], 0));
+  if (swept)
+    pc.margin = pc.slop + body_pair_reach (A, B, ctx->dt, ctx->accel);
+  else
+    pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], 0)
+                + body_reach_capped (B, world->broad.reach[b], 0);
   pc.margin_kept = pc.slop + world->broad.reach[a] + world->broad.reach[b];
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);

@@ -253,7 +253,7 @@ static int impact_within_step (const carom_world *world, const contact *k, const
   const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
   /* how far the bodies' turning can carry their surfaces in the step */
   double turn = (fabs (a->w) * ba->shape.bound_radius + fabs (b->w) * bb->shape.bound_radius) * ctx->dt;
-  int swept = -1; /* body_pair_swept, once needed (the detection's reach) */
+  int swept = -1; /* contact_pair_swept, asked once it is needed */
   vec2 v = v2_sub (b->v, a->v);
   int32_t j, hits = 0;
   if (k->piece_a < 0 && k->piece_b < 0 && ba->shape.kind == CAROM_SHAPE_POLYGON)
