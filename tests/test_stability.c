@@ -250,6 +250,54 @@ static void test_extreme_mass_ratio_stays_finite (void **state)
   carom_world_destroy (w);
 }
 
+/* A light circle resting in a V groove (two static boxes at 45 degrees)
+ * under a circle heavier by 1e3 to 1e196, resting on it off-centre (the
+ * contact leaning 6 to 29 degrees), gravity (-2, -9.81), built at rest, so
+ * every contact starts cold. Bound: neither body ever moves faster than
+ * gravity alone makes it in the run (|g| t, 5 m/s in 0.5 s). The cold
+ * start's sideways share on the light body once launched it at 1e7 m/s for
+ * a ratio of 1e10 and to infinity beyond 1e190. */
+static void test_light_body_under_a_heavy_one_is_not_launched (void **state)
+{
+  static const double ratios[] = { 1e3, 1e10, 1e50, 1e100, 1e150, 1e196 };
+  const double rl = 0.5, rh = 0.5, yl = -1.0 + sqrt (2.0) * (1.0 + rl), steps = 30, dt = 1.0 / 60;
+  const double bound = hypot (2.0, 9.81) * steps * dt;
+  double worst = 0.0;
+  size_t r;
+  int o, i, k;
+  (void) state;
+  for (r = 0; r < sizeof ratios / sizeof ratios[0]; ++r)
+    for (o = 0; o < 6; ++o)
+      {
+        carom_world *w = world_with (-2.0, -9.81, 0.0, 0.6);
+        carom_body_def d;
+        carom_body_id ids[2];
+        double lean = 0.1 + 0.08 * o;
+        add_box (w, CAROM_STATIC, -1.0, 0.0, M_PI / 4, 2.0, 2.0);
+        add_box (w, CAROM_STATIC, 1.0, 0.0, -M_PI / 4, 2.0, 2.0);
+        carom_body_def_init (&d, sizeof d);
+        d.y = yl;
+        assert_status (carom_world_add_circle (w, &d, rl, &ids[0]), CAROM_OK);
+        d.x = (rl + rh) * sin (lean), d.y = yl + (rl + rh) * cos (lean), d.density = ratios[r];
+        assert_status (carom_world_add_circle (w, &d, rh, &ids[1]), CAROM_OK);
+        for (i = 0; i < steps; ++i)
+          {
+            assert_status (carom_world_update (w, dt), CAROM_OK);
+            for (k = 0; k < 2; ++k)
+              {
+                double vx, vy, speed;
+                carom_body_get_velocity (w, ids[k], &vx, &vy);
+                speed = hypot (vx, vy);
+                if (!(speed <= worst))
+                  worst = speed;
+              }
+          }
+        carom_world_destroy (w);
+      }
+  print_message ("light under heavy: fastest %.3g m/s (bound %.3g)\n", worst, bound);
+  assert_true (worst <= bound);
+}
+
 /* An elastic cluster: 60 polygons (boxes, pentagons, triangles) in a closed
  * 12 x 12 box, no gravity, e = 1, speeds up to 5, 600 steps. Bound: the
  * kinetic energy within 1e-4 of its start at every step (impacts on several
@@ -801,6 +849,7 @@ int main (void)
     cmocka_unit_test (test_mass_ratio_1000_on_a_column),
     cmocka_unit_test (test_stack_far_from_origin_1e6),
     cmocka_unit_test (test_extreme_mass_ratio_stays_finite),
+    cmocka_unit_test (test_light_body_under_a_heavy_one_is_not_launched),
     cmocka_unit_test (test_huge_friction_stays_finite),
     cmocka_unit_test (test_small_boxes_under_full_gravity_stand),
     cmocka_unit_test (test_elastic_cluster_keeps_its_energy),
