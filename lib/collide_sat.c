@@ -94,12 +94,14 @@ static int clip_segment (clip_vertex out[2], const clip_vertex in[2], vec2 n, do
   return count;
 }
 
-/* The point of segment [p, q] nearest to x. */
+/* The point of segment [p, q] nearest to x: an end itself when it is
+ * one (p + 1 (q - p) rounds q's smallest digits away, and a corner a hair
+ * from it would be found on it). */
 static vec2 nearest_on_segment (vec2 p, vec2 q, vec2 x)
 {
   vec2 d = v2_sub (q, p);
   double len2 = v2_dot (d, d), u = len2 > 0.0 ? v2_dot (v2_sub (x, p), d) / len2 : 0.0;
-  return v2_mad (p, u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u), d);
+  return u <= 0.0 ? p : u >= 1.0 ? q : v2_mad (p, u, d);
 }
 
 /* The nearest pair of points of a vertex of one piece and an edge of the
@@ -152,7 +154,10 @@ static int32_t corner_contact (const convex_piece *a, xform xa, const convex_pie
   m->count = 0;
   if (a->internal || b->internal)
     return 0;
-  d = sqrt (nearest_corner (a, xa, b, xb, &pa, &pb, &feature));
+  nearest_corner (a, xa, b, xb, &pa, &pb, &feature);
+  /* their distance by hypot: its square underflows below 1e-154, and the
+   * normal would be no unit vector */
+  d = hypot (pb.x - pa.x, pb.y - pa.y);
   if (!(d > 0.0) || d > margin)
     return 0;
   m->points[0].normal = v2_scale (v2_sub (pb, pa), 1.0 / d);

@@ -196,6 +196,57 @@ static void test_sat_pieces_within_the_margin_are_always_a_contact (void **state
   assert_true (overlapping > 5000 && near > 2000);
 }
 
+/* A triangle with a corner on its own origin, pointing along (sx, sy). */
+static convex_piece make_tip_piece (double sx, double sy, vec2 *v, vec2 *n)
+{
+  convex_piece p;
+  int i;
+  memset (&p, 0, sizeof p);
+  v[0] = v2 (0, 0), v[1] = v2 (-sx, -0.3 * sy), v[2] = v2 (-0.3 * sx, -sy);
+  if (sx * sy < 0) /* counter-clockwise */
+    {
+      vec2 t = v[1];
+      v[1] = v[2], v[2] = t;
+    }
+  for (i = 0; i < 3; ++i)
+    {
+      vec2 e = v2_sub (v[(i + 1) % 3], v[i]);
+      n[i] = v2_normalize (v2 (e.y, -e.x));
+    }
+  p.count = 3, p.vertices = v, p.normals = n;
+  p.center = v2 (-0.4333 * sx, -0.4333 * sy), p.bound_radius = 1.0;
+  return p;
+}
+
+/* Corners a hair apart, near the origin: the squared distance underflows
+ * (below 1e-154 it is subnormal, or 0), yet the normal is a unit vector.
+ * Two triangles tip to tip, the second's tip (d, d/2) from the first's, d
+ * from 1e-150 to 1e-300: neither face gives a point, the corners meet
+ * (corner_contact). */
+static void test_sat_corner_a_hair_away_has_unit_normal (void **state)
+{
+  static const double gaps[] = { 1e-150, 1e-155, 1e-158, 1e-160, 1e-162, 1e-200, 1e-300 };
+  vec2 va[3], na[3], vb[3], nb[3];
+  convex_piece a = make_tip_piece (1, 1, va, na), b = make_tip_piece (-1, -1, vb, nb);
+  size_t k;
+  int i;
+  (void) state;
+  for (k = 0; k < sizeof gaps / sizeof gaps[0]; ++k)
+    {
+      manifold m;
+      int n = collide_polygons_sat (&a, place (0, 0, 0), &b, place (gaps[k], gaps[k] / 2, 0), 0.1, &m);
+      if (n != 1)
+        fail_msg ("gap %g: %d points, not one", gaps[k], n);
+      for (i = 0; i < n; ++i)
+        {
+          double len = hypot (m.points[i].normal.x, m.points[i].normal.y);
+          if (!(fabs (len - 1.0) <= 1e-15))
+            fail_msg ("gap %g: normal (%.17g, %.17g) has length %.17g", gaps[k], m.points[i].normal.x,
+                      m.points[i].normal.y, len);
+        }
+    }
+}
+
 /* A body deep inside another still gets a unit normal. */
 static void test_sat_deep_inside_has_unit_normal (void **state)
 {
@@ -574,6 +625,7 @@ int main (void)
   const struct CMUnitTest tests[] = {
     cmocka_unit_test (test_sat_face_contact_has_two_clipped_points),
     cmocka_unit_test (test_sat_rotated_corner),
+    cmocka_unit_test (test_sat_corner_a_hair_away_has_unit_normal),
     cmocka_unit_test (test_sat_separated_touching_margin),
     cmocka_unit_test (test_sat_pieces_within_the_margin_are_always_a_contact),
     cmocka_unit_test (test_sat_deep_inside_has_unit_normal),
