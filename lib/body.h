@@ -98,12 +98,12 @@ static inline int body_swept (const body *b, double r, double dt, double accel, 
 }
 
 /* Whether continuous collision applies to a pair of bodies in an update of
- * dt: either is swept (the reach computed afresh, as the detection did;
- * contact_pair_swept reads the detection's). */
-static inline int body_pair_swept (const body *a, const body *b, double dt, double accel, int continuous)
+ * dt, their uncapped reaches ra and rb: either is swept. (The detection's
+ * reaches, for a pair it found: contact_pair_swept.) */
+static inline int body_pair_swept (const body *a, double ra, const body *b, double rb, double dt, double accel,
+                                   int continuous)
 {
-  return body_swept (a, body_reach_uncapped (a, dt, accel), dt, accel, continuous)
-         || body_swept (b, body_reach_uncapped (b, dt, accel), dt, accel, continuous);
+  return body_swept (a, ra, dt, accel, continuous) || body_swept (b, rb, dt, accel, continuous);
 }
 
 /* body_reach from its uncapped value r, for a body that is swept or not. */

@@ -622,8 +622,7 @@ static int can_move (const body *b)
 int contact_pair_swept (const carom_world *world, int32_t a, int32_t b, const step_context *ctx)
 {
   const double *r = world->broad.reach;
-  return body_swept (&world->bodies[a], r[a], ctx->dt, ctx->accel, ctx->continuous)
-         || body_swept (&world->bodies[b], r[b], ctx->dt, ctx->accel, ctx->continuous);
+  return body_pair_swept (&world->bodies[a], r[a], &world->bodies[b], r[b], ctx->dt, ctx->accel, ctx->continuous);
 }
 
 static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)

@@ -209,7 +209,11 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
   double reach_a = A->shape.bound_radius, reach_b = B->shape.bound_radius;
   double turn = fabs (a->w) * reach_a + fabs (b->w) * reach_b;
   double t = t_from, s = 0.0;
-  int i, advances = body_pair_swept (A, B, ctx->dt, ctx->accel, ctx->continuous) ? TOI_MAX_ADVANCES_SWEPT : TOI_MAX_ADVANCES;
+  /* the reaches afresh: some callers ran no detection (tests/test_toi.c) */
+  int i, advances = body_pair_swept (A, body_reach_uncapped (A, ctx->dt, ctx->accel), B,
+                                     body_reach_uncapped (B, ctx->dt, ctx->accel), ctx->dt, ctx->accel, ctx->continuous)
+                        ? TOI_MAX_ADVANCES_SWEPT
+                        : TOI_MAX_ADVANCES;
   p.world = world, p.k = k, p.a = a, p.b = b, p.ctx = ctx;
   p.shift_a = shifts ? &shifts[k->a] : NULL;
   p.shift_b = shifts ? &shifts[k->b] : NULL;
