@@ -531,7 +531,7 @@ EOF
         b_set=$(incl_sum "$b3p" b2PrepareContactsTask)
         b_pas=$(incl_sum "$b3p" b2WarmStartContactsTask b2SolveContactsTask b2ApplyRestitutionTask b2StoreImpulsesTask)
         echo
-        echo "Instructions per step by stage, carom beside Box2D v3 (inclusive counts of each engine's functions for the stage: carom's contacts_update; contact_prepare, contact_batch_prepare and contact_shock_prepare; the contact passes of contact_batch.c, contact_solver.c and shock.c. Box2D v3's b2CollideTask and b2UpdateBroadPhasePairs; b2PrepareContactsTask; b2WarmStartContactsTask, b2SolveContactsTask, b2ApplyRestitutionTask and b2StoreImpulsesTask):"
+        echo "Instructions per step by stage, carom beside Box2D v3 (inclusive counts of each engine's functions for the stage: carom's contacts_update; contact_prepare, contact_batch_prepare and contact_shock_prepare; the contact passes of contact_batch.c, contact_solver.c, shock.c and impact.c's contact_restitution. Box2D v3's b2CollideTask and b2UpdateBroadPhasePairs; b2PrepareContactsTask; b2WarmStartContactsTask, b2SolveContactsTask, b2ApplyRestitutionTask and b2StoreImpulsesTask):"
         echo
         echo "| stage | carom | Box2D v3 | carom / Box2D v3 |"
         echo "|---|---:|---:|---:|"

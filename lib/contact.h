@@ -15,7 +15,7 @@ typedef struct contact_point {
   int32_t in_impact;    /* takes part in its contact's impact
                            (contact_impacts): near at detection, meeting
                            within the step, or of the touch (not a guard,
-                           contact_solver.c) */
+                           impact.c) */
   /* the contact constraint's data (contact_solver.c), fixed for the step */
   vec2 ra, rb;          /* from each centre of mass to the point */
   double rn_a, rn_b;    /* ra x n, rb x n */
@@ -26,7 +26,7 @@ typedef struct contact_point {
                            separation is adjusted + (moved b - moved a) . n */
   double push_impulse;  /* the push-out's pseudo-impulse in this sub-step */
   double approach;      /* normal relative speed the point met with (what
-                           restitution reverses; see contact_solver.c) */
+                           restitution reverses; see impact.c) */
   double after;         /* what gravity adds to its normal speed from the
                            meeting to the end of the step */
   double normal_impulse, tangent_impulse; /* accumulated in the sub-steps,

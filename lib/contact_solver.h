@@ -4,6 +4,7 @@
 #ifndef CAROM_CONTACT_SOLVER_H
 #define CAROM_CONTACT_SOLVER_H
 
+#include "body.h"
 #include "contact.h"
 #include "solver.h"
 #include "step.h"
@@ -29,17 +30,6 @@ double contact_solve (struct carom_world *world, const step_context *ctx, int32_
  * so position correction never changes a velocity. `first`: the sub-step's
  * first pass, which starts from no pseudo-impulse. */
 void contact_push_out (struct carom_world *world, const step_context *ctx, int first);
-/* Before the sub-steps: the bouncy impacts of the step in the order they
- * happen, each the impulse of eq. 3.23 at its time, passed on through the
- * bodies it touches as pairwise impacts (the sequential model,
- * docs/physics.md). */
-void contact_impacts (struct carom_world *world, const step_context *ctx);
-/* After the sub-steps: points that were struck leave at e times the speed
- * they met with (eq. 3.18). */
-void contact_restitution (struct carom_world *world, const step_context *ctx);
-/* Then: the bodies of impacts met within the step are moved to where the
- * impact at its time of impact leaves them. */
-void contact_time_of_impact (struct carom_world *world, const step_context *ctx);
 
 /* Shock propagation (shock.c): when touching bodies differ in mass more
  * than tenfold under gravity, a pass from the ground up after the solve and
@@ -105,5 +95,102 @@ static inline int contact_lcp2 (double k11, double k12, double k22, double b1, d
   return b1 >= 0.0 && b2 >= 0.0;
 }
 
+/* ------------------- shared by the constraint and the impacts (impact.c) */
+
+/* Two points (a face on a face) are solved together, exactly, when their
+ * 2x2 matrix is this well conditioned: one at a time, each push would tip
+ * the body and the next undo it only in part, and a perfectly aligned stack
+ * would sway. */
+#define BLOCK_MAX_CONDITION 1e4
+
+static inline double effective_mass (const solver_body *a, const solver_body *b, double ra_d, double rb_d)
+{
+  double k = a->im + b->im + a->ii * ra_d * ra_d + b->ii * rb_d * rb_d;
+  /* a non-finite k (a body far smaller than the rounding of its
+   * coordinates) leaves the point inert rather than poisoning the world */
+  return k > 0.0 && isfinite (k) ? 1.0 / k : 0.0;
+}
+
+/* The effective masses of a point, eq. 3.23's denominator along the normal
+ * and the tangent. An inert direction also loses its lever arms and its
+ * impulse: ii * (r x d) may itself overflow there, and inf * 0 in a push is
+ * NaN. */
+ALWAYS_INLINE void point_masses (contact_point *p, const solver_body *a, const solver_body *b)
+{
+  p->normal_mass = effective_mass (a, b, p->rn_a, p->rn_b);
+  p->tangent_mass = effective_mass (a, b, p->rt_a, p->rt_b);
+  if (p->normal_mass == 0.0)
+    p->rn_a = p->rn_b = p->normal_impulse = 0.0;
+  if (p->tangent_mass == 0.0)
+    p->rt_a = p->rt_b = p->tangent_impulse = 0.0;
+}
+
+/* The arm from a body's centre to its copy of a contact point, whose motion
+ * the separation follows (contact_separation). A circle's copy is where its
+ * surface meets the normal, which does not turn with the circle: its centre
+ * stands for it (arm 0), or a spinning ball on the ground would seem to
+ * rise off it as its bottom point turned away, and sink. */
+static inline vec2 separation_arm (const body *b, vec2 r)
+{
+  return b->shape.kind == CAROM_SHAPE_CIRCLE ? v2 (0.0, 0.0) : r;
+}
+
+/* The relative acceleration along n that uniform gravity gives the two
+ * bodies (per unit time; negative when it closes them). */
+static inline double relative_fall (const solver_body *a, const solver_body *b, vec2 n, const step_context *ctx)
+{
+  vec2 ka = a->moves == MOVES_DYNAMIC ? ctx->kick : v2 (0.0, 0.0);
+  vec2 kb = b->moves == MOVES_DYNAMIC ? ctx->kick : v2 (0.0, 0.0);
+  return ctx->h > 0.0 ? v2_dot (v2_sub (kb, ka), n) * ctx->inv_h : 0.0;
+}
+
+/* Whether the point may act on its bodies this step (near at detection and
+ * not leaving faster than gravity's threshold, or meeting within the step:
+ * they then move by symplectic Euler, gravity_drift_velocity), and whether
+ * it held them at detection (near, neither closing nor leaving fast: a
+ * resting contact). A point that does not close within the step, or leaves
+ * fast, leaves free flight exact. */
+static inline void constrain_bodies (const contact *k, const contact_point *p, solver_body *a, solver_body *b, double vn,
+                              const step_context *ctx)
+{
+  int32_t bits = 0, near = p->depth >= -k->slop;
+  if ((p->toi >= 0.0 && p->toi < ctx->dt) || (near && vn < ctx->restitution_threshold))
+    bits |= CONSTRAINED_ANY;
+  if (near && vn >= -ctx->restitution_threshold && vn < ctx->restitution_threshold)
+    bits |= CONSTRAINED_HELD;
+  a->constrained |= bits;
+  b->constrained |= bits;
+}
+
+/* The 2x2 matrix of a two-point contact: eq. 3.23's denominators and their
+ * coupling (on one face the normals agree; the vertex-edge method may give
+ * two points with their own normals, coupled by n1 . n2). */
+static inline void pair_matrix (contact *k, const solver_body *a, const solver_body *b)
+{
+  const contact_point *p1 = &k->points[0], *p2 = &k->points[1];
+  double im = a->im + b->im;
+  k->block = 0;
+  if (k->count != 2)
+    return;
+  k->k11 = im + a->ii * p1->rn_a * p1->rn_a + b->ii * p1->rn_b * p1->rn_b;
+  k->k22 = im + a->ii * p2->rn_a * p2->rn_a + b->ii * p2->rn_b * p2->rn_b;
+  k->k12 = im * v2_dot (p1->normal, p2->normal) + a->ii * p1->rn_a * p2->rn_a + b->ii * p1->rn_b * p2->rn_b;
+  k->block = p1->normal_mass > 0.0 && p2->normal_mass > 0.0
+             && k->k11 * k->k11 < BLOCK_MAX_CONDITION * (k->k11 * k->k22 - k->k12 * k->k12);
+}
+
+/* A normal impulse applied at a point, `remaining` before the end of the
+ * step: with every other, it adds up to what the contact gave over the whole
+ * step, and to how far that moved the bodies by the end of it (the moment,
+ * see contact_time_of_impact). Only bouncy contacts (track) need the moment:
+ * the time of impact leaves the others alone. */
+static inline void apply_normal (solver_body *a, solver_body *b, contact_point *p, double lambda, double remaining,
+                                 int track)
+{
+  contact_push (a, b, p->normal, p->rn_a, p->rn_b, lambda);
+  p->total_impulse += lambda; /* the step's, for the events too */
+  if (track)
+    p->normal_moment += lambda * remaining;
+}
 
 #endif

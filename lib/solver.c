@@ -21,6 +21,7 @@
 
 #include "contact_batch.h"
 #include "contact_solver.h"
+#include "impact.h"
 #include "damping.h"
 #include "force.h"
 #include "gravity.h"

@@ -1,0 +1,868 @@
+/* Impacts: restitution, and the moment of meeting.
+ *
+ * A bouncy contact (e > 0) that closes fast is an impact: its points leave
+ * at minus e times the normal speed they met with (eq. 3.18), by the
+ * impulse of eq. 3.23 with the corrections of docs/physics.md. Three stages
+ * make it exact within a step:
+ *
+ * - before the sub-steps (contact_impacts), the impacts of the step in the
+ *   order they happen, each at its time of impact (toi.c) with the lever
+ *   arms of that moment, passed on through the bodies it touches as
+ *   pairwise impacts (the sequential model, docs/physics.md);
+ * - after them (contact_restitution), every point that was struck in the
+ *   sub-steps leaves at e times the speed it met with, less what gravity
+ *   added after the meeting;
+ * - then (contact_time_of_impact), the bodies are moved to where an
+ *   impulse at the moment of meeting leaves them.
+ *
+ * contact_prepare asks contact_impact_points for the points of a pair that
+ * flies free into a touch within the step. The constraint that keeps
+ * contact points from approaching is contact_solver.c's. */
+#include "impact.h"
+
+#include "toi.h"
+#include "world.h"
+
+#include <string.h>
+
+/* The restitution solve iterates over the struck contacts until no point's
+ * normal speed changes by more than this fraction of the fastest approach
+ * (bodies struck on several sides at once, a cluster or a row, reach every
+ * point's target together only as the passes converge), and at most this
+ * many passes. */
+#define RESTITUTION_TOLERANCE 1e-10
+#define RESTITUTION_MAX_ITERATIONS 100
+
+/* An impact passed on through touching bodies (contact_impacts) makes at
+ * most this many pairwise impacts per contact of the step: with e < 1 a
+ * row rings on ever more softly, and the rest is left to the sub-steps. */
+#define IMPACT_MAX_EVENTS 64
+/* contact_point.in_impact of a point an impact bounced, and of one that
+ * bounced before its contact struck again at another point (it takes no
+ * part in that impact) */
+#define IMPACT_BOUNCED 2
+#define IMPACT_DONE 3
+/* A contact an impact acted on is searched for a next touch within the step
+ * from this fraction of the step after it (its points are leaving: at the
+ * impact itself they still touch), at most this many times a step. */
+#define REIMPACT_DELAY 1e-9
+#define REIMPACT_MAX 8
+/* Only for contacts whose moving bodies touched at most this many other
+ * moving bodies each at detection (sparse). */
+#define REIMPACT_DEGREE 2
+
+/* How far two bodies' centres can close along n in the step: their
+ * relative velocity's approach, and what gravity adds (at most one body's
+ * fall). */
+static double closing_reach (vec2 v, vec2 n, const step_context *ctx)
+{
+  double approach = -v2_dot (v, n) * ctx->dt;
+  return (approach > 0.0 ? approach : 0.0) + 0.5 * ctx->accel * ctx->dt * ctx->dt;
+}
+
+/* A contact whose bodies may fly free into an impact within the step:
+ * every point apart at detection, none resting (near and slow), and one
+ * closing faster than resting contact ever does and meeting within the
+ * step, or within the distance the bodies' turning carries them. With
+ * continuous collision (the world's or a bullet's), within the distance
+ * their turning and their approach along the normal carry them: a fast
+ * spinning body swings in a corner that is none of the detected points,
+ * and the points' own estimate (their speed at the arms of the detection)
+ * misses it (the elastic gas: 5 cm deep). Its pieces are polygons' convex
+ * pieces or circles (the time of impact follows their separation,
+ * contact_separation_at). */
+static int impact_within_step (const carom_world *world, const contact *k, const solver_body *a,
+                               const solver_body *b, const step_context *ctx)
+{
+  const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
+  /* how far the bodies' turning can carry their surfaces in the step */
+  double turn = (fabs (a->w) * ba->shape.bound_radius + fabs (b->w) * bb->shape.bound_radius) * ctx->dt;
+  int swept = -1; /* contact_pair_swept, asked once it is needed */
+  vec2 v = v2_sub (b->v, a->v);
+  int32_t j, hits = 0;
+  if (k->piece_a < 0 && k->piece_b < 0 && ba->shape.kind == CAROM_SHAPE_POLYGON)
+    return 0; /* the vertex-edge method's whole outlines */
+  for (j = 0; j < k->count; ++j)
+    {
+      const contact_point *p = &k->points[j];
+      if (!(p->depth < 0.0) || (p->depth >= -k->slop && !(fabs (p->approach) >= ctx->restitution_threshold)))
+        return 0;
+      hits |= p->approach < -ctx->restitution_threshold && p->toi >= 0.0 && p->toi < ctx->dt;
+      /* a fast turn can bring another corner in, which the points' own
+       * linear estimate does not see */
+      if (swept < 0)
+        swept = contact_pair_swept (world, k->a, k->b, ctx);
+      hits |= -p->depth < turn + (swept ? closing_reach (v, p->normal, ctx) : 0.0);
+    }
+  return hits;
+}
+
+/* The impulse side of a point of an impact at its time t: lever arms ra, rb
+ * of that moment (a circle's normal impulse through its centre), no impulse
+ * carried in, and the approach measured on them. */
+static void impact_arms (contact *k, contact_point *p, const body *ba, const body *bb, solver_body *a, solver_body *b,
+                         const step_context *ctx, double t, vec2 ra, vec2 rb)
+{
+  vec2 tangent = v2_perp (p->normal);
+  double vn;
+  p->rn_a = ba->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (ra, p->normal);
+  p->rn_b = bb->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (rb, p->normal);
+  p->rt_a = v2_cross (ra, tangent);
+  p->rt_b = v2_cross (rb, tangent);
+  p->normal_impulse = p->tangent_impulse = 0.0;
+  point_masses (p, a, b);
+  vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
+  p->toi = t;
+  constrain_bodies (k, p, a, b, vn, ctx);
+  p->approach = vn;
+}
+
+/* A point of an impact at its time of impact t, from the narrow phase's
+ * point q there (the bodies at xa, xb, turned by turn_a, turn_b since the
+ * step began): the normal, the point and the lever arms of eq. 3.23 are
+ * those of the touch. Its separation is still followed from the start of
+ * the step (contact_separation) through its two bodies' copies of it,
+ * carried back from the touch along their free flight; its depth is minus
+ * that separation at the start. An impulse there, at that time, with arms
+ * of that moment, keeps the pair's angular momentum about any point
+ * (contact_time_of_impact). */
+static void impact_point (contact *k, contact_point *p, const manifold_point *q, const body *ba, const body *bb,
+                          solver_body *a, solver_body *b, const step_context *ctx, double t, xform xa, xform xb,
+                          rot2 turn_a, rot2 turn_b)
+{
+  vec2 ra = v2_sub (q->point, xa.p), rb = v2_sub (q->point, xb.p);
+  vec2 ra0 = separation_arm (ba, rot2_apply_inv (turn_a, ra)), rb0 = separation_arm (bb, rot2_apply_inv (turn_b, rb));
+  /* how far each copy moved from the start to the touch */
+  vec2 moved_a = v2_sub (v2_add (xa.p, rot2_apply (turn_a, ra0)), v2_add (ba->p, ra0));
+  vec2 moved_b = v2_sub (v2_add (xb.p, rot2_apply (turn_b, rb0)), v2_add (bb->p, rb0));
+  double s0 = -q->depth - v2_dot (v2_sub (moved_b, moved_a), q->normal);
+  p->point = q->point;
+  p->normal = q->normal;
+  p->feature = q->feature;
+  p->depth = -s0;
+  p->ra = ra0;
+  p->rb = rb0;
+  p->adjusted = s0 - v2_dot (v2_sub (rb0, ra0), q->normal);
+  impact_arms (k, p, ba, bb, a, b, ctx, t, ra, rb);
+  p->in_impact = 1;
+}
+
+/* A detected point of an impact that the touch has no point for: it keeps
+ * its normal and follows its separation from the detection, as any point,
+ * but its impulse, if any, is taken at the time of impact t too, at the
+ * midpoint of its two bodies' copies of it then, so the contact's every
+ * impulse is of one moment and keeps the pair's angular momentum. */
+static void impact_guard_point (contact *k, contact_point *p, const body *ba, const body *bb, solver_body *a,
+                                solver_body *b, const step_context *ctx, double t, xform xa, xform xb,
+                                rot2 turn_a, rot2 turn_b)
+{
+  vec2 ra0 = v2_sub (p->point, ba->p), rb0 = v2_sub (p->point, bb->p), ra, rb, mid;
+  mid = v2_scale (v2_add (v2_add (xa.p, rot2_apply (turn_a, ra0)), v2_add (xb.p, rot2_apply (turn_b, rb0))), 0.5);
+  ra = v2_sub (mid, xa.p);
+  rb = v2_sub (mid, xb.p);
+  p->ra = separation_arm (ba, ra0);
+  p->rb = separation_arm (bb, rb0);
+  p->adjusted = -p->depth - v2_dot (v2_sub (p->rb, p->ra), p->normal);
+  impact_arms (k, p, ba, bb, a, b, ctx, t, ra, rb);
+  p->in_impact = 0; /* it does not touch then */
+}
+
+/* The points of contact k's touch at time t (toi.c), the bodies in free
+ * flight until then (shifted by `shifts`, or NULL): the points of the touch
+ * (within the slop of it) take the place of the detected points of the same
+ * features. The deepest, if no feature matches, takes the place of `first`
+ * (a slot index). When `guard`, the other detected points stay
+ * (impact_guard_point): they guard the rest of the step (a body an impact
+ * sets spinning turns its other corners towards the surface); else they are
+ * left as they are (an impact again, contact_impacts). Returns the slots
+ * taken, a bit each. */
+static uint32_t touch_points (carom_world *world, contact *k, const body *ba, const body *bb, solver_body *a,
+                              solver_body *b, const step_context *ctx, double t, const impact_shift *shifts,
+                              int32_t first, int guard)
+{
+  const impact_shift *sa = shifts ? &shifts[k->a] : NULL, *sh = shifts ? &shifts[k->b] : NULL;
+  xform xa = toi_pose (world, k->a, a, ctx, t, sa), xb = toi_pose (world, k->b, b, ctx, t, sh);
+  rot2 turn_a = rot2_from_angle (sa ? a->w * t + sa->a : a->w * t);
+  rot2 turn_b = rot2_from_angle (sh ? b->w * t + sh->a : b->w * t);
+  manifold m;
+  uint32_t taken = 0u;
+  int32_t i, j;
+  contact_collide_at (world, k, xa, xb, k->slop, &m);
+  for (i = 1; i < m.count; ++i) /* deepest first */
+    for (j = i; j > 0 && m.points[j].depth > m.points[j - 1].depth; --j)
+      {
+        manifold_point q = m.points[j];
+        m.points[j] = m.points[j - 1];
+        m.points[j - 1] = q;
+      }
+  for (i = 0; i < m.count; ++i)
+    {
+      int32_t at = -1;
+      for (j = 0; j < k->count; ++j)
+        if (!(taken & (1u << j)) && k->points[j].feature == m.points[i].feature)
+          at = j;
+      if (at < 0 && i == 0)
+        at = first;
+      if (at < 0)
+        continue;
+      taken |= 1u << at;
+      impact_point (k, &k->points[at], &m.points[i], ba, bb, a, b, ctx, t, xa, xb, turn_a, turn_b);
+    }
+  if (taken && guard)
+    for (j = 0; j < k->count; ++j)
+      if (!(taken & (1u << j)))
+        impact_guard_point (k, &k->points[j], ba, bb, a, b, ctx, t, xa, xb, turn_a, turn_b);
+  return taken;
+}
+
+/* A contact whose pieces, in free flight, do not touch for the rest of the
+ * step takes no impulse in it: a point closing fast, its lever arm
+ * turning, only seemed to (the passes take its normal speed at the arm of
+ * the detection), or, after an impact, the sub-steps (which move the
+ * bodies at their final velocities from the start of the step) would see
+ * the pair meet where it does not. */
+static void impact_inert (contact *k)
+{
+  int32_t j;
+  for (j = 0; j < k->count; ++j)
+    {
+      contact_point *p = &k->points[j];
+      p->rn_a = p->rn_b = p->rt_a = p->rt_b = 0.0;
+      p->normal_mass = p->tangent_mass = 0.0;
+      p->normal_impulse = p->tangent_impulse = 0.0;
+    }
+  k->block = 0;
+}
+
+/* An impact (impact_within_step) where its pieces first touch, each body in
+ * free flight until then (toi.c): touch_points, the deepest taking the place
+ * of the detected point meeting first (or, when none meets by itself, the
+ * touch being another corner turned in, of the first). When the pieces do
+ * not touch within the step, the contact takes no impulse in it. */
+static void impact_points (carom_world *world, contact *k, const body *ba, const body *bb, solver_body *a,
+                           solver_body *b, const step_context *ctx)
+{
+  double t = toi_first_touch (world, k, a, b, ctx, 0.0, ctx->dt, NULL);
+  int32_t j, first = -1;
+  if (t == TOI_APART)
+    {
+      impact_inert (k);
+      for (j = 0; j < k->count; ++j)
+        k->points[j].toi = -1.0;
+      return;
+    }
+  if (t < 0.0)
+    return;
+  for (j = 0; j < k->count; ++j)
+    if (k->points[j].toi >= 0.0 && (first < 0 || k->points[j].toi < k->points[first].toi))
+      first = j;
+  touch_points (world, k, ba, bb, a, b, ctx, t, NULL, first < 0 ? 0 : first, 1);
+}
+
+
+void contact_impact_points (carom_world *world, contact *k, solver_body *a, solver_body *b, const step_context *ctx)
+{
+  if (impact_within_step (world, k, a, b, ctx))
+    impact_points (world, k, &world->bodies[k->a], &world->bodies[k->b], a, b, ctx);
+}
+
+/* ------------------------------------------------------------ impacts */
+
+/* The approach speed below which a point along normal n does not bounce:
+ * the step's threshold (what gravity adds in two steps) for the part of
+ * gravity along n. Resting contact meets its support at about one step's
+ * gravity along its normal; a contact across gravity (a ball striking a row
+ * on a floor) meets none, and bounces at any speed. */
+static double impact_threshold (const step_context *ctx, vec2 n)
+{
+  return ctx->accel > 0.0 ? ctx->restitution_threshold * fabs (v2_dot (ctx->gravity, n)) / ctx->accel : 0.0;
+}
+
+/* An impact of the step: a bouncy contact (e > 0) that closes faster than
+ * resting contact ever does (impact_threshold), touching now (within
+ * TOI_TOUCH: it meets at 0) or apart and meeting within the step (at its
+ * earliest point's time of impact). A contact with some point touching now
+ * and closing, however slowly, meets at 0 too: its pieces already touch,
+ * and until a later time of impact its bodies' flight (impact_shift) would
+ * carry that point on into the other body unchecked (a pentagon rocking on
+ * another body, one corner resting on it while the turn brings the next
+ * corner down within the step, sank the resting one 1.1 cm). */
+static int impact_seed (const contact *k, const step_context *ctx, double *at)
+{
+  int32_t j, seed = 0, touching = 0;
+  double t = ctx->dt;
+  if (k->restitution == 0.0)
+    return 0;
+  for (j = 0; j < k->count; ++j)
+    {
+      const contact_point *p = &k->points[j];
+      double when;
+      touching |= p->normal_mass != 0.0 && p->depth >= -TOI_TOUCH * k->slop && p->approach < 0.0;
+      if (p->normal_mass == 0.0 || !(p->approach < -impact_threshold (ctx, p->normal)))
+        continue;
+      if (p->depth < 0.0 && p->toi >= 0.0 && p->toi < ctx->dt)
+        when = p->toi;
+      else if (p->depth >= -TOI_TOUCH * k->slop)
+        when = 0.0;
+      else
+        continue;
+      seed = 1;
+      t = when < t ? when : t;
+    }
+  *at = touching ? 0.0 : t;
+  return seed;
+}
+
+/* Whether an impact at time t passes on through contact k: it is an
+ * impact of the step at that moment, or its pieces touch then (within
+ * TOI_TOUCH of it: at the start of the step some point, later in the
+ * bodies' flight since the impacts, impact_shift). A contact apart then is
+ * not passed: if its bodies now close on it within the step, that is an
+ * impact in turn at its own time (impact_again). */
+static int impact_passes (const carom_world *world, contact *k, const step_context *ctx, double t)
+{
+  const solver_body *sb = world->solver_bodies;
+  double touch = TOI_TOUCH * k->slop;
+  int32_t j;
+  vec2 axis;
+  if (k->impact_at == t)
+    return 1;
+  if (t > 0.0)
+    {
+      /* where the bodies are at t does not change with the impacts at t:
+       * once found for a moment, it holds for the rest of it */
+      if (k->touch_at != t)
+        {
+          k->touch_at = t;
+          k->touches = k->count > 0
+                       && contact_separation_at (world, k,
+                                                 toi_pose (world, k->a, &sb[k->a], ctx, t, &world->impact_shifts[k->a]),
+                                                 toi_pose (world, k->b, &sb[k->b], ctx, t, &world->impact_shifts[k->b]),
+                                                 &axis)
+                              <= touch;
+        }
+      return k->touches;
+    }
+  for (j = 0; j < k->count; ++j)
+    if (k->points[j].depth >= -touch)
+      return 1;
+  return 0;
+}
+
+/* Whether a point takes part in its contact's impacts (contact_impacts). */
+static int takes_impact (const contact_point *p)
+{
+  return p->in_impact == 1 || p->in_impact == IMPACT_BOUNCED;
+}
+
+/* Coulomb friction in an impact at time t: each point that took a normal
+ * impulse lambda takes the tangent impulse that stops its slip then (the
+ * bodies' velocities now, plus what gravity adds along the tangent until
+ * t), within mu lambda. It slows the slip and never reverses it, so it
+ * takes energy and never gives any; the sub-steps after it brake a slip
+ * that is left by mu times their own normal impulses, as for any contact.
+ * (Impact events are bouncy contacts' only.) Without it a ball bouncing off
+ * a rough floor would keep its whole slip and gain no spin. */
+static void impact_friction (contact *k, solver_body *a, solver_body *b, const step_context *ctx, double t,
+                             const double *lambda)
+{
+  int32_t j;
+  if (k->friction == 0.0)
+    return;
+  for (j = 0; j < k->count; ++j)
+    {
+      contact_point *p = &k->points[j];
+      vec2 tangent = v2_perp (p->normal);
+      double vt, limit, jt;
+      if (!(lambda[j] > 0.0) || p->tangent_mass == 0.0)
+        continue;
+      vt = contact_speed (a, b, tangent, p->rt_a, p->rt_b) + relative_fall (a, b, tangent, ctx) * t;
+      limit = k->friction * lambda[j];
+      jt = -p->tangent_mass * vt;
+      jt = jt > limit ? limit : (jt < -limit ? -limit : jt);
+      contact_push (a, b, tangent, p->rt_a, p->rt_b, jt);
+      p->tangent_total += jt;
+    }
+}
+
+/* The pairwise impact of contact k at time t into the step, if it closes
+ * there faster than `tol` beyond its impact_threshold: each point's normal
+ * speed then (the bodies' velocities now, plus what gravity adds until t)
+ * leaves at minus e times itself; eq. 3.23 for one point, both at once (the
+ * 2x2 problem) for two. Its impulses count towards the step's totals, and
+ * each body's velocity change times t towards its shift (impact_shift),
+ * the move that puts it where an impulse at t leaves it
+ * (contact_time_of_impact); the bounce is an event of its step and is not
+ * warm started. Returns whether it acted. */
+static int impact_event (contact *k, solver_body *a, solver_body *b, impact_shift *shifts, const step_context *ctx,
+                         double t, double tol)
+{
+  double speed[MANIFOLD_MAX_POINTS], lambda[MANIFOLD_MAX_POINTS];
+  vec2 va = a->v, vb = b->v;
+  double wa = a->w, wb = b->w;
+  int32_t j, closing = 0, taking = 0;
+  for (j = 0; j < k->count; ++j)
+    {
+      contact_point *p = &k->points[j];
+      lambda[j] = 0.0;
+      speed[j] = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + relative_fall (a, b, p->normal, ctx) * t;
+      if (!takes_impact (p) || p->normal_mass == 0.0)
+        continue;
+      ++taking;
+      closing |= speed[j] < -(tol + impact_threshold (ctx, p->normal));
+    }
+  if (!closing)
+    return 0;
+  if (k->count == 2 && k->block && taking == 2)
+    {
+      /* a closing point leaves at e times its speed; one leaving already
+       * may be pushed back to minus its speed at most (the time reverse
+       * of a bounce), so no impulse adds energy */
+      double b1 = (1.0 + (speed[0] < 0.0 ? k->restitution : 1.0)) * speed[0];
+      double b2 = (1.0 + (speed[1] < 0.0 ? k->restitution : 1.0)) * speed[1];
+      if (!contact_lcp2 (k->k11, k->k12, k->k22, b1, b2, &lambda[0], &lambda[1]))
+        lambda[0] = lambda[1] = 0.0;
+    }
+  else
+    {
+      /* one at a time: the deepest-closing first */
+      for (j = 0; j < k->count; ++j)
+        {
+          contact_point *p = &k->points[j];
+          double vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + relative_fall (a, b, p->normal, ctx) * t;
+          lambda[j] = takes_impact (p) && vn < 0.0 ? -(1.0 + k->restitution) * vn * p->normal_mass : 0.0;
+          contact_push (a, b, p->normal, p->rn_a, p->rn_b, lambda[j]);
+        }
+      for (j = 0; j < k->count; ++j)
+        contact_push (a, b, k->points[j].normal, k->points[j].rn_a, k->points[j].rn_b, -lambda[j]);
+    }
+  for (j = 0; j < k->count; ++j)
+    {
+      contact_point *p = &k->points[j];
+      if (lambda[j] == 0.0)
+        continue;
+      contact_push (a, b, p->normal, p->rn_a, p->rn_b, lambda[j]);
+      p->total_impulse += lambda[j];
+      p->impact_moment += lambda[j] * t;
+    }
+  impact_friction (k, a, b, ctx, t, lambda);
+  shifts[k->a].p = v2_mad (shifts[k->a].p, -t, v2_sub (a->v, va));
+  shifts[k->a].a -= (a->w - wa) * t;
+  shifts[k->b].p = v2_mad (shifts[k->b].p, -t, v2_sub (b->v, vb));
+  shifts[k->b].a -= (b->w - wb) * t;
+  /* the bounce is done: the end of the step does not bounce its points
+   * again, nor does a sub-step's first push count as its meeting */
+  for (j = 0; j < k->count; ++j)
+    if (takes_impact (&k->points[j]) && k->points[j].normal_mass > 0.0)
+      {
+        k->points[j].approach = 0.0;
+        k->points[j].in_impact = IMPACT_BOUNCED;
+      }
+  k->met = 1;
+  return 1;
+}
+
+/* Contact k's next touch within the step after an impact at t changed its
+ * bodies' velocities (its own, or one passed on through its bodies): the
+ * time of impact from t in their flight since (impact_shift), from a moment
+ * after t when k itself just struck (its points leave; at t they still
+ * touch). A touch takes its points (touch_points: the deepest in a slot
+ * that has not bounced, if there is one; the bounced points of the other
+ * slots take no part in it) and makes k a seed at that time; no touch
+ * takes k's seed back, if it had one. Returns the time, or a negative. */
+static double impact_again (carom_world *world, contact *k, const step_context *ctx, double t, int struck)
+{
+  const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
+  solver_body *a = &world->solver_bodies[k->a], *b = &world->solver_bodies[k->b];
+  double from = struck ? t + REIMPACT_DELAY * ctx->dt : t, at;
+  uint32_t taken;
+  int32_t j, first = 0;
+  if (k->restitution == 0.0 || k->reimpacts >= REIMPACT_MAX || k->count == 0
+      || (k->piece_a < 0 && k->piece_b < 0 && ba->shape.kind == CAROM_SHAPE_POLYGON))
+    return -1.0;
+  /* struck at the start while overlapping: still overlapping after it */
+  for (j = 0; j < k->count && struck && t == 0.0; ++j)
+    if (k->points[j].depth > 0.0)
+      return TOI_UNKNOWN;
+  k->reimpacts++;
+  at = toi_first_touch (world, k, a, b, ctx, from, ctx->dt, world->impact_shifts);
+  if (at < 0.0)
+    return at;
+  for (j = k->count - 1; j >= 0; --j)
+    if (k->points[j].in_impact != IMPACT_BOUNCED && k->points[j].in_impact != IMPACT_DONE)
+      first = j;
+  taken = touch_points (world, k, ba, bb, a, b, ctx, at, world->impact_shifts, first, 0);
+  if (!taken)
+    return -1.0;
+  for (j = 0; j < k->count; ++j)
+    if (!(taken & (1u << j)))
+      k->points[j].in_impact = k->points[j].in_impact == IMPACT_BOUNCED ? IMPACT_DONE
+                               : k->points[j].in_impact == 1           ? 0
+                                                                        : k->points[j].in_impact;
+  pair_matrix (k, a, b);
+  return at;
+}
+
+/* How many other moving bodies body i touched at detection (a contact with
+ * some point within its slop). */
+static int32_t touching_contacts (const contacts *c, const solver_body *sb, int32_t i, const int32_t *start,
+                                  const int32_t *adj)
+{
+  int32_t e, j, n = 0;
+  for (e = start[i]; e < start[i + 1]; ++e)
+    {
+      const contact *o = &c->list[adj[e]];
+      if (sb[o->a].im == 0.0 || sb[o->b].im == 0.0)
+        continue;
+      for (j = 0; j < o->count; ++j)
+        if (o->points[j].depth >= -o->slop)
+          {
+            ++n;
+            break;
+          }
+    }
+  return n;
+}
+
+/* Whether neither moving body of contact k touched more than
+ * REIMPACT_DEGREE other moving bodies at detection: impacts in turn are
+ * looked for where bodies meet one or two others at a time (a row, a gas,
+ * a body and a wall or floor); within a packed cluster, where every impact
+ * would send all its neighbours searching, they are left to the
+ * sub-steps. */
+static int sparse (const contacts *c, const contact *k, const solver_body *sb, const int32_t *start,
+                   const int32_t *adj)
+{
+  return (sb[k->a].im == 0.0 || touching_contacts (c, sb, k->a, start, adj) <= REIMPACT_DEGREE)
+         && (sb[k->b].im == 0.0 || touching_contacts (c, sb, k->b, start, adj) <= REIMPACT_DEGREE);
+}
+
+/* Seed `i` at time at into the queue seeds[head..n), in time order (ties
+ * after those already there); the taken part before head is dropped when
+ * the room (cap) runs out. */
+static void seed_insert (contacts *c, int32_t *seeds, int32_t *head, int32_t *n, int32_t cap, int32_t i, double at)
+{
+  int32_t j;
+  if (*n == cap)
+    {
+      memmove (seeds, seeds + *head, (size_t) (*n - *head) * sizeof *seeds);
+      *n -= *head;
+      *head = 0;
+    }
+  for (j = (*n)++; j > *head && c->list[seeds[j - 1]].impact_at > at; --j)
+    seeds[j] = seeds[j - 1];
+  seeds[j] = i;
+  c->list[i].impact_at = at;
+  c->list[i].pending = 1;
+}
+
+static void seed_remove (contacts *c, int32_t *seeds, int32_t head, int32_t *n, int32_t i)
+{
+  int32_t j, o = head;
+  for (j = head; j < *n; ++j)
+    if (seeds[j] != i)
+      seeds[o++] = seeds[j];
+  *n = o;
+  c->list[i].pending = 0;
+}
+
+void contact_impacts (carom_world *world, const step_context *ctx)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  impact_shift *shifts = world->impact_shifts;
+  int32_t *seeds = world->restitution_list, *work = world->batch_scratch, *events = world->impact_events;
+  int32_t *start = NULL, *adj = NULL;
+  int32_t i, j, n = 0, head = 0, round = 0;
+  double fastest = 0.0, tol;
+  c->impacts = 0;
+  if (c->bouncy_count == 0)
+    return;
+  for (i = 0; i <= world->slot_count; ++i)
+    shifts[i].p = v2 (0.0, 0.0), shifts[i].a = 0.0;
+  for (i = 0; i < c->count; ++i)
+    {
+      contact *k = &c->list[i];
+      double at;
+      if (!impact_seed (k, ctx, &at))
+        continue;
+      for (j = 0; j < k->count; ++j)
+        fastest = fmax (fastest, -k->points[j].approach);
+      /* in the order they happen (insertion: ties keep list order) */
+      seed_insert (c, seeds, &head, &n, c->count, i, at);
+    }
+  if (n == 0)
+    return;
+  tol = RESTITUTION_TOLERANCE * fastest;
+  solver_contact_adjacency (world, &start, &adj, NULL);
+  while (head < n)
+    {
+      /* the impact, then the impacts it makes through the bodies it
+       * touches, all at its moment, until nothing there closes (a work
+       * list of contacts, each in it once at a time: a ring of c->count) */
+      int32_t seed = seeds[head++];
+      double t = c->list[seed].impact_at;
+      int32_t ring = 0, queued = 1, tried = 0, limit = IMPACT_MAX_EVENTS * (c->count + 1), acted = 0, cand = 0;
+      c->list[seed].pending = 0;
+      ++round;
+      work[0] = seed;
+      c->list[seed].queued = 1;
+      while (queued > 0 && tried < limit)
+        {
+          contact *k = &c->list[work[ring]];
+          int32_t e, side, index = work[ring];
+          ring = (ring + 1) % c->count;
+          --queued;
+          k->queued = 0;
+          ++tried;
+          if (!impact_event (k, &sb[k->a], &sb[k->b], shifts, ctx, t, tol))
+            continue;
+          ++c->impacts;
+          if (k->event_round != round)
+            events[acted++] = index;
+          k->event_round = round;
+          for (side = 0; side < 2; ++side)
+            {
+              int32_t body = side ? k->b : k->a;
+              if (sb[body].im == 0.0)
+                continue;
+              for (e = start[body]; e < start[body + 1]; ++e)
+                {
+                  contact *o = &c->list[adj[e]];
+                  if (o->queued || !impact_passes (world, o, ctx, t))
+                    continue;
+                  o->queued = 1;
+                  work[(ring + queued) % c->count] = adj[e];
+                  ++queued;
+                }
+            }
+        }
+      while (queued > 0) /* the limit cut it short */
+        {
+          c->list[work[ring]].queued = 0;
+          ring = (ring + 1) % c->count;
+          --queued;
+        }
+      /* what these impacts set moving may strike again within the step:
+       * the contacts they acted on and the bouncy contacts of their moving
+       * bodies (the work list, now free, holds them) */
+      for (i = 0; i < acted; ++i)
+        {
+          contact *k = &c->list[events[i]];
+          int32_t side, e;
+          if (!k->queued && sparse (c, k, sb, start, adj))
+            k->queued = 1, work[cand++] = events[i];
+          for (side = 0; side < 2; ++side)
+            {
+              int32_t body = side ? k->b : k->a;
+              if (sb[body].im == 0.0)
+                continue;
+              for (e = start[body]; e < start[body + 1]; ++e)
+                if (!c->list[adj[e]].queued && c->list[adj[e]].restitution > 0.0
+                    && sparse (c, &c->list[adj[e]], sb, start, adj))
+                  c->list[adj[e]].queued = 1, work[cand++] = adj[e];
+            }
+        }
+      for (i = 0; i < cand; ++i)
+        {
+          contact *k = &c->list[work[i]];
+          double at;
+          k->queued = 0;
+          at = impact_again (world, k, ctx, t, k->event_round == round);
+          if (k->pending && (at >= 0.0 || at == TOI_APART))
+            seed_remove (c, seeds, head, &n, work[i]);
+          if (at >= 0.0)
+            seed_insert (c, seeds, &head, &n, c->count, work[i], at);
+          else if (at == TOI_APART)
+            impact_inert (k);
+        }
+    }
+  /* what the end of the step bounces (contact_restitution) is measured on
+   * one common state, for e = 1 to keep the energy: now the one after the
+   * impacts */
+  for (i = 0; i < c->count; ++i)
+    {
+      contact *k = &c->list[i];
+      for (j = 0; j < k->count; ++j)
+        {
+          contact_point *p = &k->points[j];
+          if (p->in_impact != IMPACT_BOUNCED && p->in_impact != IMPACT_DONE)
+            p->approach = contact_speed (&sb[k->a], &sb[k->b], p->normal, p->rn_a, p->rn_b);
+        }
+    }
+}
+
+/* Whether a point takes part in restitution: some impulse of the step acted
+ * on it, and it met the other body faster than the threshold, or was
+ * leaving it faster than that and was pushed back by impacts elsewhere (a
+ * row or a cluster struck at once). Either way its target is eq. 3.18: it
+ * may end no slower than e times its normal speed before the step,
+ * reversed. At every point that carries impulse, that is what keeps an
+ * elastic cluster's energy: the impulses then change it by
+ * sum_i j_i (v_i,before + v_i,after) / 2 = 0. */
+static int struck (const contact_point *p, double threshold)
+{
+  return p->total_impulse > 0.0 && (p->approach < -threshold || p->approach > threshold);
+}
+
+/* The restitution problem of a two-point contact, exactly: the totals of
+ * the step's impulses x >= 0 with K x + b >= 0, complementary, where b is
+ * the error from the targets with the current totals taken back out. */
+static int restitution_pair (solver_body *a, solver_body *b, contact *k)
+{
+  contact_point *p1 = &k->points[0], *p2 = &k->points[1];
+  double x1, x2;
+  double b1 = contact_speed (a, b, p1->normal, p1->rn_a, p1->rn_b) + k->restitution * p1->approach - p1->after
+              - (k->k11 * p1->total_impulse + k->k12 * p2->total_impulse);
+  double b2 = contact_speed (a, b, p2->normal, p2->rn_a, p2->rn_b) + k->restitution * p2->approach - p2->after
+              - (k->k12 * p1->total_impulse + k->k22 * p2->total_impulse);
+  if (!k->block || !contact_lcp2 (k->k11, k->k12, k->k22, b1, b2, &x1, &x2))
+    return 0;
+  apply_normal (a, b, p1, x1 - p1->total_impulse, 0.0, 1);
+  apply_normal (a, b, p2, x2 - p2->total_impulse, 0.0, 1);
+  return 1;
+}
+
+/* One restitution pass over contact k; returns the largest change of a
+ * point's normal speed it made. The impulses it adds count towards the
+ * step's totals, never towards what the contact carries to the next step
+ * (normal_impulse): the bounce is an event of this step, and warm starting
+ * it again would push bodies that already fly apart. */
+static double restitution_pass (solver_body *a, solver_body *b, contact *k, double threshold)
+{
+  double most = 0.0;
+  int32_t j;
+  if (k->count == 2 && struck (&k->points[0], threshold) && struck (&k->points[1], threshold))
+    {
+      double t1 = k->points[0].total_impulse, t2 = k->points[1].total_impulse;
+      if (restitution_pair (a, b, k))
+        {
+          double d1 = k->points[0].total_impulse - t1, d2 = k->points[1].total_impulse - t2;
+          double v1 = fabs (k->k11 * d1 + k->k12 * d2), v2 = fabs (k->k12 * d1 + k->k22 * d2);
+          return v1 > v2 ? v1 : v2;
+        }
+    }
+  for (j = 0; j < k->count; ++j)
+    {
+      contact_point *p = &k->points[j];
+      double vn, acc, d;
+      if (!struck (p, threshold))
+        continue;
+      vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
+      acc = p->total_impulse - p->normal_mass * (vn + k->restitution * p->approach - p->after);
+      if (acc < 0.0)
+        acc = 0.0;
+      d = p->normal_mass > 0.0 ? fabs (acc - p->total_impulse) / p->normal_mass : 0.0;
+      most = d > most ? d : most;
+      apply_normal (a, b, p, acc - p->total_impulse, 0.0, 1);
+    }
+  return most;
+}
+
+void contact_restitution (carom_world *world, const step_context *ctx)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  int32_t *list = world->restitution_list;
+  double threshold = ctx->restitution_threshold, fastest = 0.0;
+  int32_t i, j, it, n = 0;
+  for (i = 0; i < c->count; ++i)
+    {
+      const contact *k = &c->list[i];
+      int any = 0;
+      if (k->restitution == 0.0)
+        continue;
+      for (j = 0; j < k->count; ++j)
+        if (struck (&k->points[j], threshold))
+          {
+            any = 1;
+            fastest = fabs (k->points[j].approach) > fastest ? fabs (k->points[j].approach) : fastest;
+          }
+      if (any)
+        list[n++] = i;
+    }
+  for (it = 0; it < RESTITUTION_MAX_ITERATIONS && n > 0; ++it)
+    {
+      double most = 0.0;
+      for (i = 0; i < n; ++i)
+        {
+          contact *k = &c->list[list[i]];
+          double d = restitution_pass (&sb[k->a], &sb[k->b], k, threshold);
+          most = d > most ? d : most;
+        }
+      if (most <= RESTITUTION_TOLERANCE * fastest)
+        break;
+    }
+}
+
+/* An impact met within the step (a point apart at detection and struck,
+ * faster than resting contact ever approaches) happened at one moment, toi, with lever arms of that moment: its
+ * total impulse P changes the velocities then, and moves the bodies by
+ * P (dt - toi) / m by the end of the step. The sub-steps applied it in parts
+ * at other moments (the approach stopped at the sub-step of meeting, the
+ * bounce at the end), and moved the bodies by their moment, the sum of
+ * lambda (dt - t) over the parts, instead. The difference is made up here,
+ * on the positions alone: the bodies end where the exact event leaves
+ * them, with the velocities it leaves them (no energy changes), and the
+ * impulse then conserves angular momentum about any point, as the event
+ * does. Only bouncy contacts need it: without restitution the speculative
+ * solve already stops the approach exactly where the bodies meet. */
+/* A body some contact acts on moves by symplectic Euler in every sub-step
+ * (gravity_drift_velocity), which takes it g h^2 / 2 further along gravity
+ * per sub-step than free flight: a contact that holds it takes that back,
+ * but a body that flew free until an impact within the step and was held by
+ * nothing at detection ends g h dt / 2 too far. Once per body. */
+static void impact_drift (solver_body *b, const step_context *ctx)
+{
+  if (b->moves != MOVES_DYNAMIC || (b->constrained & (CONSTRAINED_HELD | CONSTRAINED_DRIFT_FIXED)))
+    return;
+  b->constrained |= CONSTRAINED_DRIFT_FIXED;
+  b->dp = v2_mad (b->dp, -0.5 * ctx->dt, ctx->kick);
+}
+
+void contact_time_of_impact (carom_world *world, const step_context *ctx)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  int32_t i, j;
+  /* contact_impacts applied each impact at the start of the step, which
+   * moved the bodies by P dt / m by its end, where the event at t moves
+   * them P (dt - t) / m: the difference, P t / m, back (the shift, which
+   * sums it over the body's impacts) */
+  if (c->impacts > 0)
+    for (i = 0; i < world->slot_count; ++i)
+      {
+        sb[i].dp = v2_add (sb[i].dp, world->impact_shifts[i].p);
+        sb[i].da += world->impact_shifts[i].a;
+      }
+  for (i = 0; i < c->count; ++i)
+    {
+      contact *k = &c->list[i];
+      solver_body *a = &sb[k->a], *b = &sb[k->b];
+      for (j = 0; j < k->count && c->impacts > 0; ++j)
+        if (k->points[j].impact_moment != 0.0 && k->points[j].toi >= 0.0)
+          {
+            impact_drift (a, ctx);
+            impact_drift (b, ctx);
+          }
+      if (k->restitution == 0.0)
+        continue; /* the approach stopped at the meeting: already exact */
+      for (j = 0; j < k->count; ++j)
+        {
+          const contact_point *p = &k->points[j];
+          double late = ctx->dt - p->toi, dn, dt_;
+          vec2 t;
+          if (p->toi < 0.0 || !struck (p, ctx->restitution_threshold))
+            continue;
+          dn = p->total_impulse * late - p->normal_moment;
+          dt_ = p->tangent_total * late - p->tangent_moment;
+          t = v2_perp (p->normal);
+          a->dp = v2_sub (a->dp, v2_add (v2_scale (p->normal, a->im * dn), v2_scale (t, a->im * dt_)));
+          a->da -= a->ii * (p->rn_a * dn + p->rt_a * dt_);
+          b->dp = v2_add (b->dp, v2_add (v2_scale (p->normal, b->im * dn), v2_scale (t, b->im * dt_)));
+          b->da += b->ii * (p->rn_b * dn + p->rt_b * dt_);
+          impact_drift (a, ctx);
+          impact_drift (b, ctx);
+        }
+    }
+}
