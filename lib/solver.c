@@ -26,6 +26,7 @@
 #include "force.h"
 #include "gravity.h"
 #include "joint.h"
+#include "tunnel.h"
 #include "world.h"
 
 #include <string.h>
@@ -297,6 +298,7 @@ void solver_step (carom_world *world, const step_context *ctx)
       contact_batch_store (world);
       contact_restitution (world, ctx);
       contact_time_of_impact (world, ctx);
+      tunnel_guard (world, ctx);
     }
   if (joints)
     joint_finish (world, ctx);
