@@ -86,7 +86,7 @@ static double segment_enters (const convex_piece *P, xform x, vec2 c0, vec2 d)
   return inside ? -1.0 : lo;
 }
 
-/* Body slot i placed a fraction t along its motion of the step. */
+/* Body B (its solver body s) placed a fraction t along its motion of the step. */
 static xform along (const body *B, const solver_body *s, double t)
 {
   rot2 turn = rot2_from_angle (s->da * t);
