@@ -619,6 +619,17 @@ static int can_move (const body *b)
   return b->inv_mass > 0.0 || body_kinematic_moving (b);
 }
 
+const convex_piece *contact_piece (const carom_world *world, const contact *k, int side, convex_piece *circle)
+{
+  const body *X = &world->bodies[side ? k->b : k->a];
+  const convex_piece *pieces;
+  int32_t piece = side ? k->piece_b : k->piece_a;
+  body_pieces (X, &pieces, circle);
+  if (piece >= 0)
+    return &pieces[piece];
+  return X->shape.kind == CAROM_SHAPE_CIRCLE ? pieces : NULL;
+}
+
 int contact_pair_swept (const carom_world *world, int32_t a, int32_t b, const step_context *ctx)
 {
   const double *r = world->broad.reach;

@@ -163,6 +163,10 @@ double contact_pieces_first_meeting (const struct carom_world *world, const cont
  * unit axis *axis (from A towards B): an edge normal, or the direction of
  * the distance. */
 double contact_separation_at (const struct carom_world *world, const contact *k, xform xa, xform xb, vec2 *axis);
+/* Contact k's convex piece of one body (side 0: A, 1: B), in its body's
+ * frame: a circle body's one circle (made in `circle`), a polygon's or a
+ * compound's piece; NULL for the vertex-edge method's whole outline. */
+const convex_piece *contact_piece (const struct carom_world *world, const contact *k, int side, convex_piece *circle);
 /* Whether continuous collision applies to the pair of bodies in slots a
  * and b in this step: either is swept (body_swept: the world's continuous
  * collision, a bullet, or a body that moves fast for its size), judged

@@ -49,13 +49,7 @@ xform toi_pose (const carom_world *world, int32_t i, const solver_body *sb, cons
     x.p = v2_add (x.p, shift->p), turned += shift->a;
   if (sb->moves == MOVES_DYNAMIC)
     x.p = v2_mad (x.p, 0.5 * t * t, ctx->gravity);
-  x.q = B->q;
-  if (turned != 0.0)
-    {
-      rot2 turn = rot2_from_angle (turned);
-      x.q.c = B->q.c * turn.c - B->q.s * turn.s;
-      x.q.s = B->q.s * turn.c + B->q.c * turn.s;
-    }
+  x.q = turned != 0.0 ? rot2_then (B->q, rot2_from_angle (turned)) : B->q;
   return x;
 }
 

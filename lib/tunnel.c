@@ -33,8 +33,6 @@
 #include "solver.h"
 #include "world.h"
 
-#include <string.h>
-
 /* Bisection steps for the pose of the first overlap: the path's length
  * over 2^60, far below any slop. */
 #define TUNNEL_REFINES 60
@@ -89,11 +87,9 @@ static double segment_enters (const convex_piece *P, xform x, vec2 c0, vec2 d)
 /* Body B (its solver body s) placed a fraction t along its motion of the step. */
 static xform along (const body *B, const solver_body *s, double t)
 {
-  rot2 turn = rot2_from_angle (s->da * t);
   xform x;
   x.p = v2_mad (B->p, t, s->dp);
-  x.q.c = B->q.c * turn.c - B->q.s * turn.s;
-  x.q.s = B->q.s * turn.c + B->q.c * turn.s;
+  x.q = rot2_then (B->q, rot2_from_angle (s->da * t));
   return x;
 }
 
@@ -107,7 +103,7 @@ void tunnel_guard (carom_world *world, const step_context *ctx)
     {
       const contact *k = &c->list[i];
       int side = world->bodies[k->a].type == CAROM_STATIC ? 0 : 1; /* which is static */
-      int32_t s = side ? k->b : k->a, d = side ? k->a : k->b, piece = side ? k->piece_b : k->piece_a;
+      int32_t s = side ? k->b : k->a, d = side ? k->a : k->b;
       const body *S = &world->bodies[s], *D = &world->bodies[d];
       solver_body *m = &sb[d];
       convex_piece circle;
@@ -121,15 +117,8 @@ void tunnel_guard (carom_world *world, const step_context *ctx)
       if (S->type != CAROM_STATIC || m->moves != MOVES_DYNAMIC
           || !(v2_len (m->dp) + fabs (m->da) * D->shape.bound_radius > deep))
         continue;
-      if (S->shape.kind == CAROM_SHAPE_CIRCLE)
-        {
-          memset (&circle, 0, sizeof circle);
-          circle.radius = S->shape.radius;
-          P = &circle;
-        }
-      else if (piece >= 0)
-        P = &S->shape.pieces[piece];
-      else
+      P = contact_piece (world, k, side, &circle);
+      if (!P)
         continue; /* the vertex-edge method's whole outline: not convex */
       xs.p = S->p, xs.q = S->q;
       enter = segment_enters (P, xs, D->p, m->dp);

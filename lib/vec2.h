@@ -62,6 +62,14 @@ static inline vec2 v2_normalize (vec2 a)
 rot2 rot2_from_angle (double angle);
 static inline vec2 rot2_apply (rot2 q, vec2 v) { return v2 (q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y); }
 static inline vec2 rot2_apply_inv (rot2 q, vec2 v) { return v2 (q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y); }
+/* q turned further by r (their angles added) */
+static inline rot2 rot2_then (rot2 q, rot2 r)
+{
+  rot2 x;
+  x.c = q.c * r.c - q.s * r.s;
+  x.s = q.s * r.c + q.c * r.s;
+  return x;
+}
 
 static inline vec2 xform_apply (xform t, vec2 v) { return v2_add (rot2_apply (t.q, v), t.p); }
 static inline vec2 xform_apply_inv (xform t, vec2 v) { return rot2_apply_inv (t.q, v2_sub (v, t.p)); }
