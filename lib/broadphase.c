@@ -22,6 +22,8 @@ void broadphase_destroy (carom_world *world)
   mem_free (&world->allocator, bp->cell_fill, (size_t) bp->fill_cap * sizeof (int32_t));
   mem_free (&world->allocator, bp->reach, (size_t) bp->reach_cap * sizeof (double));
   mem_free (&world->allocator, bp->hits, (size_t) bp->hits_cap * sizeof (int32_t));
+  mem_free (&world->allocator, bp->fat, (size_t) bp->fat_cap * sizeof (fat_box));
+  mem_free (&world->allocator, bp->pairs, (size_t) bp->pairs_cap * sizeof (int32_t));
   memset (bp, 0, sizeof *bp);
 }
 
@@ -49,6 +51,39 @@ static void fill_entry (broadphase *bp, sweep_entry *e, const body *b, int axis,
       e->lo2 = b->box_lo.x - m, e->hi2 = b->box_hi.x + m;
     }
   e->is_static = b->type == CAROM_STATIC;
+}
+
+/* The entry's box grown by BROAD_FAT_FRACTION of its body's size (by
+ * nothing for a size that is not finite): its fat box. */
+static fat_box fattened (const sweep_entry *e, const body *b)
+{
+  double g = BROAD_FAT_FRACTION * b->shape.size;
+  fat_box f;
+  if (!(g < INFINITY))
+    g = 0.0;
+  f.lo = e->lo - g, f.hi = e->hi + g;
+  f.lo2 = e->lo2 - g, f.hi2 = e->hi2 + g;
+  f.escaped = 0;
+  return f;
+}
+
+/* Whether two fat boxes overlap. */
+static int fat_overlap (const fat_box *f, const fat_box *g)
+{
+  return (g->lo <= f->hi) & (g->hi >= f->lo) & (g->lo2 <= f->hi2) & (g->hi2 >= f->lo2);
+}
+
+/* Give every escaped entry its new fat box. */
+static void refatten (carom_world *world, int32_t n)
+{
+  broadphase *bp = &world->broad;
+  int32_t i;
+  for (i = 0; i < n; ++i)
+    {
+      const sweep_entry *e = &bp->entries[i];
+      if (bp->fat[e->slot].escaped)
+        bp->fat[e->slot] = fattened (e, &world->bodies[e->slot]);
+    }
 }
 
 /* Stable bottom-up merge sort by `lo`: the same order on every machine. */
@@ -138,37 +173,16 @@ static int reserve_entries (carom_world *world)
          && mem_reserve (&world->allocator, (void **) &bp->scratch, &bp->scratch_cap, world->live_count,
                          sizeof (sweep_entry))
          && mem_reserve (&world->allocator, (void **) &bp->reach, &bp->reach_cap, world->slot_count, sizeof (double))
+         && mem_reserve (&world->allocator, (void **) &bp->fat, &bp->fat_cap, world->slot_count, sizeof (fat_box))
          && mem_reserve (&world->allocator, (void **) &bp->hits, &bp->hits_cap, world->live_count, sizeof (int32_t));
 }
 
-int broadphase_sweep (carom_world *world, const step_context *ctx, pair_callback fn, void *user)
+/* Sweep the boxes (the entries sorted by `lo`) and report each pair that
+ * meets (never two static bodies). */
+static void sweep_boxes (carom_world *world, int32_t n, pair_callback fn, void *user)
 {
   broadphase *bp = &world->broad;
-  int32_t i, n;
-  int axis = widest_axis (world);
-  if (axis != bp->axis)
-    {
-      /* switch only for a clear difference, so the order stays coherent */
-      bp->axis = axis;
-      bp->dirty = 1;
-    }
-  if (!reserve_entries (world))
-    return 0;
-  if (bp->dirty)
-    {
-      n = bp->count = fill_all (world, ctx);
-      merge_sort (bp->entries, bp->scratch, n);
-      bp->dirty = 0;
-    }
-  else
-    {
-      n = bp->count;
-      for (i = 0; i < n; ++i)
-        fill_entry (bp, &bp->entries[i], &world->bodies[bp->entries[i].slot], bp->axis, world->def.slop, ctx);
-      if (!insertion_sort (bp->entries, n))
-        merge_sort (bp->entries, bp->scratch, n);
-    }
-
+  int32_t i;
   for (i = 0; i < n; ++i)
     {
       /* a copy, and a pointer walk: the compiler cannot tell that fn leaves
@@ -186,6 +200,223 @@ int broadphase_sweep (carom_world *world, const step_context *ctx, pair_callback
       for (k = 0; k < hits; ++k)
         fn (world, e.slot, bp->hits[k], user);
     }
+}
+
+/* Keep entry i's hits (entry indices) as pairs with it. Returns 0 when
+ * memory ran out. */
+static int keep_hits (carom_world *world, int32_t i, int32_t hits)
+{
+  broadphase *bp = &world->broad;
+  int32_t k;
+  if (hits > 0
+      && !mem_reserve (&world->allocator, (void **) &bp->pairs, &bp->pairs_cap, bp->pair_count + 2 * hits,
+                       sizeof (int32_t)))
+    return 0;
+  for (k = 0; k < hits; ++k)
+    {
+      bp->pairs[bp->pair_count++] = i;
+      bp->pairs[bp->pair_count++] = bp->hits[k];
+    }
+  return 1;
+}
+
+/* Sweep the fat boxes (the entries sorted by `lo`) and keep every pair
+ * that overlaps (never two static bodies). A fat box begins at most `lead`
+ * before its entry's box: once an entry's box begins more than that beyond
+ * the end of this fat box, neither it nor any later one can overlap it.
+ * Returns 0 when memory ran out. */
+static int sweep_fat (carom_world *world, int32_t n)
+{
+  broadphase *bp = &world->broad;
+  double lead = 0.0;
+  int32_t i;
+  bp->pairs_valid = 0;
+  bp->pair_count = 0;
+  for (i = 0; i < n; ++i)
+    {
+      double d = bp->entries[i].lo - bp->fat[bp->entries[i].slot].lo;
+      lead = d > lead ? d : lead;
+    }
+  for (i = 0; i < n; ++i)
+    {
+      const fat_box e = bp->fat[bp->entries[i].slot];
+      int32_t is_static = bp->entries[i].is_static, hits = 0;
+      const sweep_entry *f, *end = bp->entries + n;
+      for (f = &bp->entries[i + 1]; f < end && f->lo - lead <= e.hi; ++f)
+        {
+          const fat_box *g = &bp->fat[f->slot];
+          bp->hits[hits] = (int32_t) (f - bp->entries);
+          hits += (g->lo <= e.hi) & (g->hi >= e.lo) & (g->lo2 <= e.hi2) & (g->hi2 >= e.lo2)
+                  & !(is_static & f->is_static);
+        }
+      if (!keep_hits (world, i, hits))
+        return 0;
+    }
+  bp->pairs_valid = 1;
+  return 1;
+}
+
+/* Mend the kept pairs for the entries whose boxes left their fat boxes:
+ * their pairs go, and the pairs of their new fat boxes come in, at the end.
+ * The room is found first: when memory runs out (returns 0), nothing has
+ * changed. */
+static int mend_kept (carom_world *world, int32_t n)
+{
+  broadphase *bp = &world->broad;
+  int32_t i, j, kept = 0, more = 0;
+  /* count the new pairs: each escaped entry's new fat box against the
+   * others' (an escaped one's new one, the pair counted once) */
+  for (i = 0; i < n; ++i)
+    {
+      const sweep_entry *e = &bp->entries[i];
+      fat_box f;
+      if (!bp->fat[e->slot].escaped)
+        continue;
+      f = fattened (e, &world->bodies[e->slot]);
+      for (j = 0; j < n; ++j)
+        {
+          const sweep_entry *o = &bp->entries[j];
+          fat_box g = bp->fat[o->slot];
+          if (g.escaped)
+            {
+              if (j <= i)
+                continue;
+              g = fattened (o, &world->bodies[o->slot]);
+            }
+          more += fat_overlap (&f, &g) & !(e->is_static & o->is_static);
+        }
+    }
+  if (!mem_reserve (&world->allocator, (void **) &bp->pairs, &bp->pairs_cap, bp->pair_count + 2 * more,
+                    sizeof (int32_t)))
+    return 0;
+  /* nothing fails from here on */
+  for (i = 0; i < bp->pair_count; i += 2)
+    if (!bp->fat[bp->entries[bp->pairs[i]].slot].escaped && !bp->fat[bp->entries[bp->pairs[i + 1]].slot].escaped)
+      {
+        bp->pairs[kept++] = bp->pairs[i];
+        bp->pairs[kept++] = bp->pairs[i + 1];
+      }
+  bp->pair_count = kept;
+  /* the new fat boxes, still marked escaped until every pair is in */
+  for (i = 0; i < n; ++i)
+    {
+      const sweep_entry *e = &bp->entries[i];
+      if (bp->fat[e->slot].escaped)
+        {
+          bp->fat[e->slot] = fattened (e, &world->bodies[e->slot]);
+          bp->fat[e->slot].escaped = 1;
+        }
+    }
+  for (i = 0; i < n; ++i)
+    {
+      const fat_box e = bp->fat[bp->entries[i].slot];
+      int32_t is_static = bp->entries[i].is_static, hits = 0;
+      if (!e.escaped)
+        continue;
+      for (j = 0; j < n; ++j)
+        {
+          const fat_box *g = &bp->fat[bp->entries[j].slot];
+          bp->hits[hits] = j;
+          /* with another escaped entry, the pair is kept from the lower index */
+          hits += fat_overlap (&e, g) & !(is_static & bp->entries[j].is_static) & (!g->escaped | (j > i));
+        }
+      keep_hits (world, i, hits); /* room reserved above */
+    }
+  for (i = 0; i < n; ++i)
+    bp->fat[bp->entries[i].slot].escaped = 0;
+  return 1;
+}
+
+/* Report the kept pairs whose boxes meet, in the order they were kept. */
+static void report_kept (carom_world *world, pair_callback fn, void *user)
+{
+  broadphase *bp = &world->broad;
+  int32_t i;
+  for (i = 0; i < bp->pair_count; i += 2)
+    {
+      const sweep_entry *e = &bp->entries[bp->pairs[i]], *f = &bp->entries[bp->pairs[i + 1]];
+      if (e->lo <= f->hi && f->lo <= e->hi && e->lo2 <= f->hi2 && f->lo2 <= e->hi2)
+        fn (world, e->slot, f->slot, user);
+    }
+}
+
+/* A detection, with the update's context ctx:
+ *  - after an update whose boxes were swept, for BROAD_MOVING_STEPS
+ *    updates: sweep the boxes again;
+ *  - else look at the fat boxes: when more than one body in
+ *    BROAD_MEND_SHARE left its fat box, give those new fat boxes and sweep
+ *    the boxes (and leave the fat boxes alone for a while); when fewer did,
+ *    mend the kept pairs (or, with none kept, sweep the fat boxes) and test
+ *    them.
+ * What a detection decides and leaves depends on the bodies and on what
+ * the last successful update left: one that fails (here, or in a later
+ * stage of the update) and is tried again decides the same and reports the
+ * same pairs in the same order. */
+int broadphase_sweep (carom_world *world, const step_context *ctx, pair_callback fn, void *user)
+{
+  broadphase *bp = &world->broad;
+  int32_t i, n, escaped = 0;
+  int axis = widest_axis (world), look = ctx->update >= bp->look_at;
+  if (axis != bp->axis)
+    {
+      /* switch only for a clear difference, so the order stays coherent */
+      bp->axis = axis;
+      bp->dirty = 1;
+    }
+  if (!reserve_entries (world))
+    return 0;
+  if (bp->dirty)
+    {
+      n = bp->count = fill_all (world, ctx);
+      for (i = 0; i < n; ++i)
+        bp->fat[bp->entries[i].slot] = fattened (&bp->entries[i], &world->bodies[bp->entries[i].slot]);
+      bp->pairs_valid = 0;
+      bp->dirty = 0;
+      escaped = n;
+      look = 1;
+    }
+  else
+    {
+      n = bp->count;
+      for (i = 0; i < n; ++i)
+        {
+          sweep_entry *e = &bp->entries[i];
+          fat_box *f = &bp->fat[e->slot];
+          fill_entry (bp, e, &world->bodies[e->slot], bp->axis, world->def.slop, ctx);
+          if (look)
+            {
+              f->escaped = !(e->lo >= f->lo && e->hi <= f->hi && e->lo2 >= f->lo2 && e->hi2 <= f->hi2);
+              escaped += f->escaped;
+            }
+        }
+      if (!look)
+        escaped = n;
+    }
+  if (escaped > n / BROAD_MEND_SHARE)
+    {
+      /* many bodies left their fat boxes: sweep the boxes */
+      if (look)
+        {
+          refatten (world, n);
+          bp->look_at = ctx->update + 1 + BROAD_MOVING_STEPS;
+        }
+      bp->pairs_valid = 0;
+      if (!insertion_sort (bp->entries, n))
+        merge_sort (bp->entries, bp->scratch, n);
+      sweep_boxes (world, n, fn, user);
+      return 1;
+    }
+  if (!bp->pairs_valid)
+    {
+      refatten (world, n);
+      if (!insertion_sort (bp->entries, n))
+        merge_sort (bp->entries, bp->scratch, n);
+      if (!sweep_fat (world, n))
+        return 0;
+    }
+  else if (escaped > 0 && !mend_kept (world, n))
+    return 0;
+  report_kept (world, fn, user); /* the pairs that meet are among the kept */
   return 1;
 }
 

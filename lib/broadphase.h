@@ -1,10 +1,18 @@
 /* Broad phase: sort and sweep over bounding boxes along the axis where the
  * bodies spread most. Bodies move little between steps, so the sorted order is
  * repaired by insertion sort in about O(n); a full merge sort, O(n log n),
- * runs when bodies are added or the order is badly shuffled. From
- * GRID_MIN_BODIES bodies on, a uniform grid replaces the sweep, whose cost
- * grows as n sqrt(n) in crowded worlds. Pairs whose boxes overlap go to a
- * plain callback, as the original c_index did. */
+ * runs when bodies are added or the order is badly shuffled.
+ *
+ * Each body also has a fat box: its box grown by a tenth of its size, made
+ * anew when the box leaves it. The pairs of fat boxes that overlap are
+ * kept, and the pairs whose boxes meet are among them: while few bodies
+ * leave their fat boxes (a pile at rest, a pyramid), a detection mends the
+ * kept pairs for those bodies alone and tests the kept pairs, with no sort
+ * and no sweep; while many do (bodies falling, a gas), it sweeps the boxes.
+ *
+ * From GRID_MIN_BODIES bodies on, a uniform grid replaces the sweep, whose
+ * cost grows as n sqrt(n) in crowded worlds. Pairs whose boxes overlap go to
+ * a plain callback, as the original c_index did. */
 #ifndef CAROM_BROADPHASE_H
 #define CAROM_BROADPHASE_H
 
@@ -19,6 +27,25 @@ typedef struct sweep_entry {
   int32_t slot;
   int32_t is_static;
 } sweep_entry;
+
+typedef struct fat_box {
+  double lo, hi, lo2, hi2; /* along the sweep axis, and the other */
+  int32_t escaped;         /* the body's box has left it (found again in
+                              each detection that looks) */
+} fat_box;
+
+/* A fat box is a body's box grown by this fraction of its size
+ * (shape.size) on every side. */
+#define BROAD_FAT_FRACTION 0.1
+/* While at most one body in this many leaves its fat box, the kept pairs
+ * are mended for those bodies (each tested against every other body:
+ * cheaper than a sweep while they are few); when more do, the boxes are
+ * swept. */
+#define BROAD_MEND_SHARE 64
+/* After an update whose detection swept the boxes, the fat boxes are left
+ * alone for this many more updates (they stay valid where they still hold
+ * their boxes), then looked at again. */
+#define BROAD_MOVING_STEPS 8
 
 /* Worlds of this many live bodies use the grid. (The fuzz build lowers it,
  * so that small fuzzed worlds exercise both methods.) */
@@ -36,6 +63,18 @@ typedef struct broadphase {
   double *reach;     /* per slot, this detection's body_reach_uncapped
                         (the pairs' margins, contact.c) */
   int32_t reach_cap;
+  fat_box *fat;      /* per slot */
+  int32_t fat_cap;
+  int32_t *pairs;    /* the kept pairs of overlapping fat boxes: entry
+                        indices, two per pair */
+  int32_t pair_count, pairs_cap; /* pairs, and room in int32_t */
+  uint64_t look_at;  /* the update (step_context.update) from which the fat
+                        boxes are looked at again (BROAD_MOVING_STEPS):
+                        counted in updates, so that a failed update tried
+                        again decides as it did */
+  int pairs_valid;   /* the kept pairs are all the pairs of overlapping fat
+                        boxes (never two static bodies), and the entries
+                        are in the order they index */
   int axis;          /* 0: sweep along x, 1: along y */
   int dirty;         /* bodies were added or removed: rebuild */
 } broadphase;
@@ -49,7 +88,8 @@ void broadphase_destroy (struct carom_world *world);
 int broadphase_update (struct carom_world *world, const struct step_context *ctx, pair_callback fn, void *user);
 
 /* The two methods broadphase_update chooses between, each reporting the
- * same set of pairs (in its own order). */
+ * same set of pairs (in its own order: the sweep's depends on whether it
+ * swept or tested its kept pairs). */
 int broadphase_sweep (struct carom_world *world, const struct step_context *ctx, pair_callback fn, void *user);
 int broadphase_grid (struct carom_world *world, const struct step_context *ctx, pair_callback fn, void *user);
 

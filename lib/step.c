@@ -32,6 +32,7 @@ void step_context_init (step_context *ctx, const carom_world *world, double dt)
   ctx->converged = ctx->accel > 0.0 ? SOLVE_CONVERGED * ctx->accel * ctx->h : INFINITY;
   ctx->joint_hold = joint_hold_soft (ctx->h);
   ctx->sensor_reach = 0.0;
+  ctx->update = world->updates;
   if (world->sensor_count > 0)
     {
       int32_t i;

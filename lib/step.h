@@ -38,6 +38,8 @@ typedef struct step_context {
                             solve (joint_hold_soft) */
   double sensor_reach;   /* how far the fastest body can travel in dt, when
                             the world has a sensor (broadphase.c); else 0 */
+  uint64_t update;       /* the world's successful updates before this one: a
+                            failed update tried again has the same */
 } step_context;
 
 struct carom_world;

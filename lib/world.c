@@ -126,6 +126,7 @@ carom_status carom_world_update (carom_world *world, double dt)
   force_clear (world);
   sleep_update (world, &ctx);
   check_finite (world);
+  world->updates++;
   return CAROM_OK;
 }
 

@@ -13,6 +13,7 @@ struct carom_world {
   carom_allocator allocator;
   carom_world_def def; /* settings; def.allocator is the caller's copy */
   vec2 gravity;
+  uint64_t updates;     /* carom_world_update calls that succeeded */
 
   /* bodies: slots [0, slot_count), some dead; dead slots are reused LIFO */
   body *bodies;

@@ -20,6 +20,7 @@
  *   - at the end every byte is freed, and `free` got the size `alloc` got.
  * The scene loader is run the same way through the def it takes. */
 #include "support.h"
+#include "world.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -110,7 +111,9 @@ static void use_allocator (carom_world_def *def, checking_alloc *c)
 
 /* ------------------------------------------------------- world snapshots */
 
-#define MAX_IDS 32
+#define MAX_IDS 128
+#define MAX_CONTACTS 512
+#define MAX_EVENTS 256
 
 typedef struct body_state {
   carom_body_id id;
@@ -125,8 +128,8 @@ typedef struct contact_state {
 typedef struct world_state {
   int32_t body_count, contact_count, event_count, joint_count;
   body_state bodies[MAX_IDS];
-  contact_state contacts[256];
-  carom_contact_event events[64];
+  contact_state contacts[MAX_CONTACTS];
+  carom_contact_event events[MAX_EVENTS];
 } world_state;
 
 static void snapshot (const carom_world *w, world_state *s)
@@ -148,10 +151,10 @@ static void snapshot (const carom_world *w, world_state *s)
       assert_status (carom_body_get_spin (w, ids[i], &b->spin), CAROM_OK);
       assert_status (carom_body_get_mass (w, ids[i], &b->mass, &b->inertia, &b->area), CAROM_OK);
     }
-  s->event_count = carom_world_get_events (w, s->events, 64);
-  assert_true (s->event_count >= 0 && s->event_count <= 64);
+  s->event_count = carom_world_get_events (w, s->events, MAX_EVENTS);
+  assert_true (s->event_count >= 0 && s->event_count <= MAX_EVENTS);
   s->contact_count = carom_world_contact_count (w);
-  for (i = 0; i < s->contact_count && i < 256; ++i)
+  for (i = 0; i < s->contact_count && i < MAX_CONTACTS; ++i)
     {
       contact_state *c = &s->contacts[i];
       assert_status (carom_world_get_contact (w, i, &c->a, &c->b, &c->px, &c->py, &c->nx, &c->ny, &c->depth),
@@ -193,7 +196,7 @@ static int same_state (const world_state *a, const world_state *b, char *why, si
                 (int) b->contact_count);
       return 0;
     }
-  for (i = 0; i < a->contact_count && i < 256; ++i)
+  for (i = 0; i < a->contact_count && i < MAX_CONTACTS; ++i)
     if (memcmp (&a->contacts[i], &b->contacts[i], sizeof a->contacts[i]) != 0)
       {
         snprintf (why, why_size, "contact %d changed", (int) i);
@@ -703,6 +706,84 @@ static void test_rain_update_out_of_memory_with_substeps (void **state)
   assert_true (ooms > 0);
 }
 
+/* The broad phase's kept pairs (lib/broadphase.h): 100 unit boxes resting
+ * on a floor 2 apart, still long enough that the broad phase keeps the
+ * pairs of their fat boxes; then, update after update, one of them is
+ * moved to the end of a row of touching boxes, so that the kept pairs are
+ * mended for it and grow past their room. Each allocation the updates make fails
+ * once; the failed update leaves the world as it was, then succeeds, and
+ * every update matches the reference world's. */
+static void test_kept_pairs_out_of_memory (void **state)
+{
+  checking_alloc c;
+  carom_world_def def;
+  scenario sc;
+  carom_body_def d;
+  long k, setup_calls, total = -1;
+  int i, step, ooms = 0;
+  (void) state;
+  use_allocator (&def, &c);
+  def.gravity_y = -10.0;
+  for (k = 0;; ++k)
+    {
+      carom_world *worlds[2];
+      carom_body_id ids[2][101];
+      int n, moved = 0;
+      memset (&sc, 0, sizeof sc);
+      sc.alloc = &c;
+      checking_reset (&c, 0, FAIL_ONCE);
+      assert_status (carom_world_init (&sc.w, &def), CAROM_OK);
+      start_reference (&sc, &def);
+      worlds[0] = sc.w, worlds[1] = sc.ref;
+      for (n = 0; n < 2; ++n)
+        {
+          assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+          d.type = CAROM_STATIC, d.x = 150.0, d.y = -0.5;
+          assert_status (carom_world_add_box (worlds[n], &d, 320.0, 1.0, NULL), CAROM_OK);
+          assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+          for (i = 0; i < 100; ++i)
+            {
+              d.x = 2.0 * i, d.y = 0.5;
+              assert_status (carom_world_add_box (worlds[n], &d, 1.0, 1.0, NULL), CAROM_OK);
+            }
+          assert_int_equal (carom_world_get_bodies (worlds[n], ids[n], 101), 101);
+        }
+      setup_calls = c.calls;
+      c.fail_at = k > 0 ? setup_calls + k : 0;
+      sc.k = k;
+      for (step = 0; step < 75; ++step)
+        {
+          if (step >= 12 && moved < 60)
+            {
+              /* the next box to the end of the row at x = 210 on */
+              for (n = 0; n < 2; ++n)
+                assert_status (carom_body_set_position (worlds[n], ids[n][1 + moved], 210.0 + 1.0 * moved, 0.5),
+                               CAROM_OK);
+              moved++;
+            }
+          checked_call (&sc, UPDATE);
+        }
+      if (k == 0)
+        {
+          total = c.calls - setup_calls;
+          assert_true (total > 2);
+          /* the row stands: each box on the floor, and touching the next */
+          assert_true (carom_world_contact_count (sc.w) >= 2 * 100 + 59);
+          assert_true (sc.w->broad.pairs_valid);
+        }
+      ooms += sc.oom_calls;
+      if (sc.ref)
+        stop_reference (&sc);
+      carom_world_destroy (sc.w);
+      assert_int_equal (c.live_blocks, 0);
+      assert_int_equal (c.bad_frees, 0);
+      if (k > 0 && c.failures == 0)
+        break;
+    }
+  assert_int_equal (k, total + 1);
+  assert_true (ooms > 0);
+}
+
 /* The grid broad phase (worlds of GRID_MIN_BODIES bodies and more): each
  * allocation the first update makes fails once, in a world of 4100 bodies
  * falling onto a floor; the update reports OUT_OF_MEMORY and leaves every
@@ -876,6 +957,7 @@ int main (void)
     cmocka_unit_test (test_fail_each_allocation_once_vertex_edge),
     cmocka_unit_test (test_fail_each_allocation_once_substeps),
     cmocka_unit_test (test_rain_update_out_of_memory_with_substeps),
+    cmocka_unit_test (test_kept_pairs_out_of_memory),
     cmocka_unit_test (test_grid_update_out_of_memory),
     cmocka_unit_test (test_fail_every_allocation_from_k),
     cmocka_unit_test (test_scene_text_out_of_memory),

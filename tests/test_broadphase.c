@@ -2,7 +2,8 @@
  * bodies) and the grid (from there on), report exactly the same pairs, each
  * once, whatever the scene: crowded mixed sizes with long walls, bodies on a
  * line, worlds spread over 1e89, one box covering all, boxes reaching past
- * the doubles, statics only. */
+ * the doubles, statics only; and the sweep's kept pairs, mended as bodies
+ * leave their fat boxes, report what the grid does as bodies jump about. */
 #include "support.h"
 
 #include <stdlib.h>
@@ -63,9 +64,49 @@ static int32_t same_pairs_in (carom_world *w, double dt)
   return count;
 }
 
+/* The sweep alone (the grid would make it start afresh), as the detection
+ * of an update, against every two of the boxes it filled: the same sorted
+ * pairs. Returns their number. */
+static int32_t sweep_pairs_in (carom_world *w, double dt)
+{
+  pair_list sweep = { NULL, 0, 0 }, all = { NULL, 0, 0 };
+  const broadphase *bp = &w->broad;
+  int32_t i, j, count;
+  step_context ctx;
+  step_context_init (&ctx, w, dt);
+  assert_int_equal (broadphase_sweep (w, &ctx, collect, &sweep), 1);
+  w->updates++; /* as a successful update counts itself */
+  for (i = 0; i < bp->count; ++i)
+    for (j = i + 1; j < bp->count; ++j)
+      {
+        const sweep_entry *e = &bp->entries[i], *f = &bp->entries[j];
+        if (e->lo <= f->hi && f->lo <= e->hi && e->lo2 <= f->hi2 && f->lo2 <= e->hi2 && !(e->is_static && f->is_static))
+          collect (w, e->slot, f->slot, &all);
+      }
+  assert_int_equal (sweep.count, all.count);
+  if (all.count > 0)
+    {
+      qsort (sweep.keys, (size_t) sweep.count, sizeof *sweep.keys, compare_keys);
+      qsort (all.keys, (size_t) all.count, sizeof *all.keys, compare_keys);
+    }
+  for (i = 0; i < all.count; ++i)
+    assert_true (sweep.keys[i] == all.keys[i]);
+  count = all.count;
+  free (sweep.keys);
+  free (all.keys);
+  return count;
+}
+
+/* Both methods, then the sweep again and again (nothing moves): the first
+ * detections sweep the boxes, the later ones test the kept pairs; each
+ * reports the same pairs. */
 static int32_t same_pairs (carom_world *w)
 {
-  return same_pairs_in (w, 0.0);
+  int32_t i, count = same_pairs_in (w, 0.0);
+  for (i = 0; i < BROAD_MOVING_STEPS + 2; ++i)
+    assert_int_equal (sweep_pairs_in (w, 0.0), count);
+  assert_true (w->broad.pairs_valid || count == 0);
+  return count;
 }
 
 /* A small deterministic generator, so the scene is the same everywhere. */
@@ -183,9 +224,81 @@ static void test_degenerate_layouts (void **state)
   carom_world_destroy (w);
 }
 
+/* 400 bodies of mixed shapes and sizes in a loose grid on a static floor;
+ * detection after detection, none, a few or many of them jump (by a bit,
+ * or across the world): the sweep reports the pairs whose boxes meet every
+ * time, and the few jumps were taken by mending the kept pairs, the many
+ * by sweeping. */
+static void test_kept_pairs_follow_jumping_bodies (void **state)
+{
+  carom_world *w = new_world ();
+  carom_body_id ids[401];
+  uint32_t seed = 777;
+  int32_t i, round, mended = 0, swept = 0, kept = 0;
+  (void) state;
+  add_body (w, CAROM_STATIC, 10, -1, 30, 1);
+  for (i = 0; i < 400; ++i)
+    add_body (w, CAROM_DYNAMIC, 1.1 * (i % 20), 1.1 * (i / 20), 0.6 + 0.6 * next_unit (&seed), i);
+  assert_int_equal (carom_world_get_bodies (w, ids, 401), 401);
+  for (round = 0; round < 120; ++round)
+    {
+      /* none for a while, then one to four jumping, now and then thirty */
+      int32_t jumps = round < 12 ? 0 : round % 40 == 39 ? 30 : round % 3 == 0 ? 0 : 1 + (int32_t) (4 * next_unit (&seed));
+      int escaped_before = 0;
+      for (i = 0; i < jumps; ++i)
+        {
+          carom_body_id id = ids[1 + (int32_t) (400 * next_unit (&seed))];
+          double x, y, far = next_unit (&seed) < 0.3 ? 20.0 : 0.4;
+          assert_status (carom_body_get_position (w, id, &x, &y), CAROM_OK);
+          assert_status (carom_body_set_position (w, id, x + far * (next_unit (&seed) - 0.5),
+                                                  y + far * (next_unit (&seed) - 0.5)),
+                         CAROM_OK);
+        }
+      escaped_before = jumps > 0 && w->broad.pairs_valid && w->updates >= w->broad.look_at;
+      assert_true (sweep_pairs_in (w, 1.0 / 60.0) > 400);
+      if (jumps == 0)
+        kept += w->broad.pairs_valid;
+      else if (escaped_before && w->broad.pairs_valid)
+        mended++;
+      else if (!w->broad.pairs_valid)
+        swept++;
+    }
+  print_message ("kept pairs tested alone %d times, mended %d times, boxes swept %d times\n", (int) kept,
+                 (int) mended, (int) swept);
+  assert_true (kept >= 5 && mended >= 5 && swept >= 5);
+  carom_world_destroy (w);
+}
+
+/* Two unit boxes 0.08 apart along the sweep axis, nothing moving, until
+ * the sweep keeps their pair (their fat boxes, each 0.05 wider, overlap);
+ * then each moves 0.04 towards the other, inside its fat box: they meet,
+ * and the kept pairs report them. */
+static void test_kept_pairs_hold_bodies_closing_within_their_fat_boxes (void **state)
+{
+  carom_world *w = new_world ();
+  carom_body_id ids[2];
+  carom_body_def d;
+  int32_t i;
+  (void) state;
+  assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+  assert_status (carom_world_add_box (w, &d, 1, 1, &ids[0]), CAROM_OK);
+  d.x = 1.08;
+  assert_status (carom_world_add_box (w, &d, 1, 1, &ids[1]), CAROM_OK);
+  for (i = 0; i < BROAD_MOVING_STEPS + 2; ++i)
+    assert_int_equal (sweep_pairs_in (w, 1.0 / 60.0), 0);
+  assert_true (w->broad.pairs_valid && w->broad.pair_count == 2);
+  assert_status (carom_body_set_position (w, ids[0], 0.04, 0.0), CAROM_OK);
+  assert_status (carom_body_set_position (w, ids[1], 1.04, 0.0), CAROM_OK);
+  assert_int_equal (sweep_pairs_in (w, 1.0 / 60.0), 1);
+  assert_true (w->broad.pairs_valid);
+  carom_world_destroy (w);
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
+    cmocka_unit_test (test_kept_pairs_hold_bodies_closing_within_their_fat_boxes),
+    cmocka_unit_test (test_kept_pairs_follow_jumping_bodies),
     cmocka_unit_test (test_crowded_mixed_sizes_with_walls),
     cmocka_unit_test (test_degenerate_layouts),
   };
