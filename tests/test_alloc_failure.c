@@ -641,27 +641,34 @@ static void test_fail_each_allocation_once_substeps (void **state)
   sweep (FAIL_ONCE, CAROM_NARROW_SAT, 3);
 }
 
-/* Rain: 24 boxes in 4 columns land on the ground and on each other one
- * after the other, so the contact list keeps growing during updates of 4
- * sub-steps and its buffers are reallocated in later updates too. Each allocation made by
- * the updates fails once; the failed update must leave the world as it was,
- * then succeed, and every update must match the reference world's. */
-static void test_rain_update_out_of_memory_with_substeps (void **state)
+/* A run of updates of which each allocation fails once (run k fails the
+ * k-th allocation the updates make; run 0 fails none and counts them): the
+ * failed update must leave the world as it was, then succeed, and every
+ * update must match the reference world's. `build` makes the bodies of the
+ * tested world (which = 0) and the reference (1), `before` acts on both
+ * before update `step`, `check` looks at the world run 0 ends with. */
+typedef struct update_run {
+  int32_t substeps, steps;
+  void (*build) (carom_world *w, int which, void *data);
+  void (*before) (carom_world *w, int which, int step, void *data);
+  void (*check) (carom_world *w);
+  void *data;
+} update_run;
+
+static void each_update_allocation_fails_once (const update_run *u)
 {
   checking_alloc c;
   carom_world_def def;
   scenario sc;
-  carom_body_def d;
   long k, setup_calls, total = -1;
-  int i, step, ooms = 0;
-  (void) state;
+  int step, n, ooms = 0;
   use_allocator (&def, &c);
   def.gravity_y = -10.0;
-  def.substeps = 4;
+  if (u->substeps > 0)
+    def.substeps = u->substeps;
   for (k = 0;; ++k)
     {
       carom_world *worlds[2];
-      int n;
       memset (&sc, 0, sizeof sc);
       sc.alloc = &c;
       checking_reset (&c, 0, FAIL_ONCE);
@@ -669,29 +676,22 @@ static void test_rain_update_out_of_memory_with_substeps (void **state)
       start_reference (&sc, &def);
       worlds[0] = sc.w, worlds[1] = sc.ref;
       for (n = 0; n < 2; ++n)
-        {
-          assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
-          d.type = CAROM_STATIC;
-          assert_status (carom_world_add_box (worlds[n], &d, 40.0, 1.0, NULL), CAROM_OK);
-          assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
-          for (i = 0; i < 24; ++i)
-            {
-              /* 4 columns of 6 boxes, each column a little higher: the
-               * stacks' contacts interact, so a lost warm start shows */
-              d.x = -6.0 + 3.0 * (i % 4), d.y = 0.5 + 1.05 * (i / 4) + 0.3 * (i % 4);
-              assert_status (carom_world_add_box (worlds[n], &d, 0.9, 0.9, NULL), CAROM_OK);
-            }
-        }
+        u->build (worlds[n], n, u->data);
       setup_calls = c.calls;
       c.fail_at = k > 0 ? setup_calls + k : 0;
       sc.k = k;
-      for (step = 0; step < 90; ++step)
-        checked_call (&sc, UPDATE);
+      for (step = 0; step < u->steps; ++step)
+        {
+          if (u->before)
+            for (n = 0; n < 2; ++n)
+              u->before (worlds[n], n, step, u->data);
+          checked_call (&sc, UPDATE);
+        }
       if (k == 0)
         {
           total = c.calls - setup_calls;
           assert_true (total > 2);
-          assert_int_equal (carom_world_contact_count (sc.w), 24 * 2); /* all landed, face on face */
+          u->check (sc.w);
         }
       ooms += sc.oom_calls;
       if (sc.ref)
@@ -706,82 +706,88 @@ static void test_rain_update_out_of_memory_with_substeps (void **state)
   assert_true (ooms > 0);
 }
 
+static void add_ground (carom_world *w, double x, double width)
+{
+  carom_body_def d;
+  assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+  d.type = CAROM_STATIC, d.x = x, d.y = -0.5;
+  assert_status (carom_world_add_box (w, &d, width, 1.0, NULL), CAROM_OK);
+}
+
+/* Rain: 24 boxes in 4 columns land on the ground and on each other one
+ * after the other, so the contact list keeps growing during updates of 4
+ * sub-steps and its buffers are reallocated in later updates too; 90
+ * updates. */
+static void rain_build (carom_world *w, int which, void *data)
+{
+  carom_body_def d;
+  int i;
+  (void) which, (void) data;
+  add_ground (w, 0.0, 40.0);
+  assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+  for (i = 0; i < 24; ++i)
+    {
+      /* 4 columns of 6 boxes, each column a little higher: the stacks'
+       * contacts interact, so a lost warm start shows */
+      d.x = -6.0 + 3.0 * (i % 4), d.y = 0.5 + 1.05 * (i / 4) + 0.3 * (i % 4);
+      assert_status (carom_world_add_box (w, &d, 0.9, 0.9, NULL), CAROM_OK);
+    }
+}
+
+static void rain_check (carom_world *w)
+{
+  assert_int_equal (carom_world_contact_count (w), 24 * 2); /* all landed, face on face */
+}
+
+static void test_rain_update_out_of_memory_with_substeps (void **state)
+{
+  update_run u = { 4, 90, rain_build, NULL, rain_check, NULL };
+  (void) state;
+  each_update_allocation_fails_once (&u);
+}
+
 /* The broad phase's kept pairs (lib/broadphase.h): 100 unit boxes resting
  * on a floor 2 apart, still long enough that the broad phase keeps the
  * pairs of their fat boxes; then, update after update, one of them is
  * moved to the end of a row of touching boxes, so that the kept pairs are
- * mended for it and grow past their room. Each allocation the updates make fails
- * once; the failed update leaves the world as it was, then succeeds, and
- * every update matches the reference world's. */
+ * mended for it and grow past their room; 75 updates. */
+static void row_build (carom_world *w, int which, void *data)
+{
+  carom_body_id (*ids)[101] = data;
+  carom_body_def d;
+  int i;
+  add_ground (w, 150.0, 320.0);
+  assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+  for (i = 0; i < 100; ++i)
+    {
+      d.x = 2.0 * i, d.y = 0.5;
+      assert_status (carom_world_add_box (w, &d, 1.0, 1.0, NULL), CAROM_OK);
+    }
+  assert_int_equal (carom_world_get_bodies (w, ids[which], 101), 101);
+}
+
+static void row_before (carom_world *w, int which, int step, void *data)
+{
+  carom_body_id (*ids)[101] = data;
+  int moved = step - 12;
+  /* from update 12 on, the next box to the end of the row at x = 210 */
+  if (moved >= 0 && moved < 60)
+    assert_status (carom_body_set_position (w, ids[which][1 + moved], 210.0 + 1.0 * moved, 0.5), CAROM_OK);
+}
+
+static void row_check (carom_world *w)
+{
+  /* the row stands: each box on the floor, and touching the next */
+  assert_true (carom_world_contact_count (w) >= 2 * 100 + 59);
+  assert_true (w->broad.pairs_valid);
+}
+
 static void test_kept_pairs_out_of_memory (void **state)
 {
-  checking_alloc c;
-  carom_world_def def;
-  scenario sc;
-  carom_body_def d;
-  long k, setup_calls, total = -1;
-  int i, step, ooms = 0;
+  carom_body_id ids[2][101];
+  update_run u = { 0, 75, row_build, row_before, row_check, ids };
   (void) state;
-  use_allocator (&def, &c);
-  def.gravity_y = -10.0;
-  for (k = 0;; ++k)
-    {
-      carom_world *worlds[2];
-      carom_body_id ids[2][101];
-      int n, moved = 0;
-      memset (&sc, 0, sizeof sc);
-      sc.alloc = &c;
-      checking_reset (&c, 0, FAIL_ONCE);
-      assert_status (carom_world_init (&sc.w, &def), CAROM_OK);
-      start_reference (&sc, &def);
-      worlds[0] = sc.w, worlds[1] = sc.ref;
-      for (n = 0; n < 2; ++n)
-        {
-          assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
-          d.type = CAROM_STATIC, d.x = 150.0, d.y = -0.5;
-          assert_status (carom_world_add_box (worlds[n], &d, 320.0, 1.0, NULL), CAROM_OK);
-          assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
-          for (i = 0; i < 100; ++i)
-            {
-              d.x = 2.0 * i, d.y = 0.5;
-              assert_status (carom_world_add_box (worlds[n], &d, 1.0, 1.0, NULL), CAROM_OK);
-            }
-          assert_int_equal (carom_world_get_bodies (worlds[n], ids[n], 101), 101);
-        }
-      setup_calls = c.calls;
-      c.fail_at = k > 0 ? setup_calls + k : 0;
-      sc.k = k;
-      for (step = 0; step < 75; ++step)
-        {
-          if (step >= 12 && moved < 60)
-            {
-              /* the next box to the end of the row at x = 210 on */
-              for (n = 0; n < 2; ++n)
-                assert_status (carom_body_set_position (worlds[n], ids[n][1 + moved], 210.0 + 1.0 * moved, 0.5),
-                               CAROM_OK);
-              moved++;
-            }
-          checked_call (&sc, UPDATE);
-        }
-      if (k == 0)
-        {
-          total = c.calls - setup_calls;
-          assert_true (total > 2);
-          /* the row stands: each box on the floor, and touching the next */
-          assert_true (carom_world_contact_count (sc.w) >= 2 * 100 + 59);
-          assert_true (sc.w->broad.pairs_valid);
-        }
-      ooms += sc.oom_calls;
-      if (sc.ref)
-        stop_reference (&sc);
-      carom_world_destroy (sc.w);
-      assert_int_equal (c.live_blocks, 0);
-      assert_int_equal (c.bad_frees, 0);
-      if (k > 0 && c.failures == 0)
-        break;
-    }
-  assert_int_equal (k, total + 1);
-  assert_true (ooms > 0);
+  each_update_allocation_fails_once (&u);
 }
 
 /* The grid broad phase (worlds of GRID_MIN_BODIES bodies and more): each
