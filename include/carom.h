@@ -220,7 +220,9 @@ CAROM_API int32_t carom_world_contact_count (const carom_world *world);
 /**
  * Contact point `index` (0 <= index < count): the two bodies, the impact
  * point, the unit normal pointing from body a to body b, and the penetration
- * depth (negative when the bodies are apart but within the contact margin).
+ * depth (negative when the bodies are apart but within the contact margin),
+ * as found at the start of the update, or, for a point an impact moved
+ * within the update, at the touch (with continuous collision).
  * NULL outputs are skipped. Errors: NULL_ARGUMENT, BAD_ARGUMENT (index).
  */
 CAROM_API carom_status carom_world_get_contact (const carom_world *world,

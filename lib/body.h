@@ -67,15 +67,22 @@ static inline carom_body_id body_slot_id (const body *b, int32_t slot)
   return ((uint64_t) b->generation << 32) | (uint64_t) (uint32_t) (slot + 1);
 }
 
-/* How far any point of the body can move in time h: (|v| + |w| R) h, plus
+/* How far any point of the body can move in time h at velocities v and w:
+ * (|v| + |w| R) h, plus
  * what an acceleration of magnitude `accel` (gravity) adds within h. A body
  * that is not swept (body_swept: the world's continuous collision off, not
  * a bullet, not fast for its size) has its contacts looked for no further
  * ahead than 2% of its size, except between pieces that were in contact the
  * step before and do not bounce (contact.c, pair_pieces). */
+static inline double body_reach_at (const body *b, vec2 v, double w, double h, double accel)
+{
+  return h * (v2_len (v) + fabs (w) * b->shape.bound_radius + (b->inv_mass > 0.0 ? accel * h : 0.0));
+}
+
+/* The same at its own velocities. */
 static inline double body_reach_uncapped (const body *b, double h, double accel)
 {
-  return h * (v2_len (b->v) + fabs (b->w) * b->shape.bound_radius + (b->inv_mass > 0.0 ? accel * h : 0.0));
+  return body_reach_at (b, b->v, b->w, h, accel);
 }
 
 /* A body moves fast when its own motion (its velocities, not gravity's

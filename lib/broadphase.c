@@ -365,6 +365,7 @@ int broadphase_sweep (carom_world *world, const step_context *ctx, pair_callback
     }
   if (!reserve_entries (world))
     return 0;
+  bp->sorted = 0;
   if (bp->dirty)
     {
       n = bp->count = fill_all (world, ctx);
@@ -403,6 +404,7 @@ int broadphase_sweep (carom_world *world, const step_context *ctx, pair_callback
       bp->pairs_valid = 0;
       if (!insertion_sort (bp->entries, n))
         merge_sort (bp->entries, bp->scratch, n);
+      bp->sorted = 1;
       sweep_boxes (world, n, fn, user);
       return 1;
     }
@@ -411,6 +413,7 @@ int broadphase_sweep (carom_world *world, const step_context *ctx, pair_callback
       refatten (world, n);
       if (!insertion_sort (bp->entries, n))
         merge_sort (bp->entries, bp->scratch, n);
+      bp->sorted = 1;
       if (!sweep_fat (world, n))
         return 0;
     }
@@ -418,6 +421,137 @@ int broadphase_sweep (carom_world *world, const step_context *ctx, pair_callback
     return 0;
   report_kept (world, fn, user); /* the pairs that meet are among the kept */
   return 1;
+}
+
+/* ------------------------------------------------------------- queries */
+
+void broadphase_box (const carom_world *world, int32_t slot, double reach, sweep_entry *e)
+{
+  const body *b = &world->bodies[slot];
+  double m = world->def.slop * b->shape.size + reach;
+  vec2 lo = v2 (b->box_lo.x - m, b->box_lo.y - m), hi = v2 (b->box_hi.x + m, b->box_hi.y + m);
+  e->slot = slot;
+  e->is_static = b->type == CAROM_STATIC;
+  e->lo = world->broad.axis == 0 ? lo.x : lo.y, e->hi = world->broad.axis == 0 ? hi.x : hi.y;
+  e->lo2 = world->broad.axis == 0 ? lo.y : lo.x, e->hi2 = world->broad.axis == 0 ? hi.y : hi.x;
+}
+
+/* Whether entry a sorts before b: by lo, then by slot (a total order, so
+ * the heap sort below gives the same order on every run). */
+static int entry_before (const sweep_entry *a, const sweep_entry *b)
+{
+  return a->lo < b->lo || (a->lo == b->lo && a->slot < b->slot);
+}
+
+static void sift_down (sweep_entry *a, int32_t i, int32_t n)
+{
+  for (;;)
+    {
+      int32_t c = 2 * i + 1;
+      sweep_entry t;
+      if (c >= n)
+        return;
+      if (c + 1 < n && entry_before (&a[c], &a[c + 1]))
+        ++c;
+      if (!entry_before (&a[i], &a[c]))
+        return;
+      t = a[i], a[i] = a[c], a[c] = t;
+      i = c;
+    }
+}
+
+/* In place, O(k log k) with no scratch: the query's boxes live in the
+ * sweep's own scratch. */
+static void heap_sort (sweep_entry *a, int32_t n)
+{
+  int32_t i;
+  for (i = n / 2 - 1; i >= 0; --i)
+    sift_down (a, i, n);
+  for (i = n - 1; i > 0; --i)
+    {
+      sweep_entry t = a[0];
+      a[0] = a[i], a[i] = t;
+      sift_down (a, 0, i);
+    }
+}
+
+static int boxes_meet (const sweep_entry *a, const sweep_entry *b)
+{
+  return a->lo <= b->hi && a->hi >= b->lo && a->lo2 <= b->hi2 && a->hi2 >= b->lo2;
+}
+
+/* Whether a query box and an entry make a pair to report. */
+static int query_pair (const sweep_entry *box, const sweep_entry *e)
+{
+  return boxes_meet (box, e) && !(box->is_static & e->is_static);
+}
+
+/* The first of the n entries (sorted by lo) whose lo is at least x. */
+static int32_t first_from (const sweep_entry *a, int32_t n, double x)
+{
+  int32_t lo = 0, hi = n;
+  while (lo < hi)
+    {
+      int32_t mid = lo + (hi - lo) / 2;
+      if (a[mid].lo < x)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+  return lo;
+}
+
+void broadphase_query (carom_world *world, sweep_entry *boxes, int32_t k, const double *queried, pair_callback fn,
+                       void *user)
+{
+  broadphase *bp = &world->broad;
+  const sweep_entry *e = bp->entries;
+  double lead = 0.0;
+  int32_t i, j, n = bp->count;
+  heap_sort (boxes, k);
+  for (i = 0; i < k; ++i)
+    {
+      double w = boxes[i].hi - boxes[i].lo;
+      lead = w > lead ? w : lead;
+      /* the boxes among themselves: a sweep */
+      for (j = i + 1; j < k && boxes[j].lo <= boxes[i].hi; ++j)
+        if (boxes_meet (&boxes[i], &boxes[j]))
+          fn (world, boxes[i].slot, boxes[j].slot, user);
+    }
+  if (bp->sorted)
+    {
+      /* the entries sorted by lo (this detection swept them): each box
+       * looks up those that begin within the widest entry's width of it.
+       * Entries wider than every box (walls, the ground) are few: each is
+       * tested against every box instead, so that they do not widen the
+       * lookup of all the others. */
+      double wide = 0.0;
+      for (i = 0; i < n; ++i)
+        {
+          double w = e[i].hi - e[i].lo;
+          if (w <= lead)
+            wide = w > wide ? w : wide;
+          else if (queried[e[i].slot] == 0.0)
+            for (j = 0; j < k; ++j)
+              if (query_pair (&boxes[j], &e[i]))
+                fn (world, boxes[j].slot, e[i].slot, user);
+        }
+      for (j = 0; j < k; ++j)
+        for (i = first_from (e, n, boxes[j].lo - wide); i < n && e[i].lo <= boxes[j].hi; ++i)
+          if (queried[e[i].slot] == 0.0 && e[i].hi - e[i].lo <= lead && query_pair (&boxes[j], &e[i]))
+            fn (world, boxes[j].slot, e[i].slot, user);
+      return;
+    }
+  for (i = 0; i < n; ++i)
+    {
+      if (queried[e[i].slot] != 0.0)
+        continue; /* met above */
+      /* from the first box that can reach the entry: none begins more
+       * than lead before its end */
+      for (j = first_from (boxes, k, e[i].lo - lead); j < k && boxes[j].lo <= e[i].hi; ++j)
+        if (query_pair (&boxes[j], &e[i]))
+          fn (world, boxes[j].slot, e[i].slot, user);
+    }
 }
 
 /* ---------------------------------------------------------------- grid
@@ -466,7 +600,8 @@ int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback 
   int32_t n, i, j, k, cells, total, moving = 0;
   if (!reserve_entries (world))
     return 0;
-  n = fill_all (world, ctx);
+  n = bp->count = fill_all (world, ctx);
+  bp->sorted = 0;
   bp->dirty = 1; /* the sweep, if it runs again, starts afresh */
   e = bp->entries;
   if (n == 0)

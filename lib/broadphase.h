@@ -75,6 +75,8 @@ typedef struct broadphase {
   int pairs_valid;   /* the kept pairs are all the pairs of overlapping fat
                         boxes (never two static bodies), and the entries
                         are in the order they index */
+  int sorted;        /* the entries are in the order of lo (the last
+                        detection sorted them) */
   int axis;          /* 0: sweep along x, 1: along y */
   int dirty;         /* bodies were added or removed: rebuild */
 } broadphase;
@@ -92,5 +94,17 @@ int broadphase_update (struct carom_world *world, const struct step_context *ctx
  * swept or tested its kept pairs). */
 int broadphase_sweep (struct carom_world *world, const struct step_context *ctx, pair_callback fn, void *user);
 int broadphase_grid (struct carom_world *world, const struct step_context *ctx, pair_callback fn, void *user);
+
+/* The box of the body in `slot`, grown by the contact margin and `reach`,
+ * as an entry of this detection's axis. */
+void broadphase_box (const struct carom_world *world, int32_t slot, double reach, sweep_entry *e);
+/* Report each pair of one of the k boxes (broadphase_box; sorted here) and
+ * a body whose box of the last detection meets it, or of two of the boxes
+ * that meet, once (never two static bodies, never a body with itself), the
+ * box's body first. The bodies of the boxes are those whose `queried` (per
+ * slot) is not 0, and each box holds its body's box of the detection. The
+ * boxes may be broad.scratch: the detection no longer needs it. */
+void broadphase_query (struct carom_world *world, sweep_entry *boxes, int32_t k, const double *queried,
+                       pair_callback fn, void *user);
 
 #endif

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "seams.h"
+#include "solver.h"
 #include "step.h"
 #include "world.h"
 
@@ -180,6 +181,7 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
       return;
     }
   k = &c->list[c->count++];
+  c->bouncy_found += pc->restitution > 0.0;
   /* valid until the pool grows again: contacts_update points every
    * contact at its points once the detection is done */
   k->points = c->pool + c->point_count;
@@ -198,7 +200,7 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
        * rest) */
       p->point = m->points[i].point;
       p->normal = m->points[i].normal;
-      p->depth = m->points[i].depth;
+      p->depth = p->found = m->points[i].depth;
       p->feature = m->points[i].feature;
       p->normal_impulse = p->tangent_impulse = 0.0;
       p->normal_mass = p->tangent_mass = 0.0;
@@ -636,9 +638,12 @@ int contact_pair_swept (const carom_world *world, int32_t a, int32_t b, const st
   return body_pair_swept (&world->bodies[a], r[a], &world->bodies[b], r[b], ctx->dt, ctx->accel, ctx->continuous);
 }
 
-static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
+/* The contacts of bodies a and b. The margin looks as far ahead as the
+ * pair can close in the step, from the bodies' velocities; `reach`, when
+ * not negative, is that distance instead (velocities an impact changed
+ * within the step, contacts_after_impacts). */
+static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_context *ctx, double reach)
 {
-  const step_context *ctx = user;
   body *A, *B;
   pair_context pc;
   manifold m;
@@ -675,12 +680,14 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
   /* speculative margin: pairs that can close their gap within this step
    * are contacts now, so impacts are met before the bodies overlap */
   swept = contact_pair_swept (world, a, b, ctx);
-  if (swept)
+  if (reach >= 0.0)
+    pc.margin = pc.slop + reach;
+  else if (swept)
     pc.margin = pc.slop + body_pair_reach (A, B, ctx->dt, ctx->accel);
   else
     pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], 0)
                 + body_reach_capped (B, world->broad.reach[b], 0);
-  pc.margin_kept = pc.slop + world->broad.reach[a] + world->broad.reach[b];
+  pc.margin_kept = reach >= 0.0 ? pc.margin : pc.slop + world->broad.reach[a] + world->broad.reach[b];
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   pc.pieces_a = pc.pieces_b = NULL;
@@ -729,6 +736,113 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
     }
 }
 
+static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
+{
+  detect_pair (world, a, b, user, -1.0);
+}
+
+/* ------------------------------------------------------- after impacts */
+
+/* What contacts_after_impacts hands each pair it finds. */
+typedef struct after_impacts {
+  const step_context *ctx;
+  const int32_t *start, *other; /* the contacts' adjacency before any was added */
+  int full;                     /* the room kept for new contacts ran out */
+} after_impacts;
+
+/* Whether bodies s and o have a contact (of those before this stage). */
+static int have_contact (const after_impacts *ai, int32_t s, int32_t o)
+{
+  int32_t e;
+  for (e = ai->start[s]; e < ai->start[s + 1]; ++e)
+    if (ai->other[e] == o)
+      return 1;
+  return 0;
+}
+
+/* How fast two bodies, each at its velocities before or after its
+ * impacts (a body not struck: the same), can close on each other: the
+ * fastest of the four relative velocities, and the faster spin of each. */
+static double closing_speed (const body *S, const solver_body *s, const body *O, const solver_body *o)
+{
+  double fastest = 0.0;
+  int i;
+  for (i = 0; i < 4; ++i)
+    {
+      double u = v2_len (v2_sub (i & 1 ? s->v : S->v, i & 2 ? o->v : O->v));
+      fastest = u > fastest ? u : fastest;
+    }
+  return fastest + fmax (fabs (s->w), fabs (S->w)) * S->shape.bound_radius
+         + fmax (fabs (o->w), fabs (O->w)) * O->shape.bound_radius;
+}
+
+/* A pair of a struck body s and a body o its flight can reach: its
+ * contacts, looking as far ahead as the two can close in the step with
+ * their velocities before and after their impacts (the detection looked
+ * only as far as those before). */
+static void on_struck_pair (carom_world *world, int32_t s, int32_t o, void *user)
+{
+  after_impacts *ai = user;
+  contacts *c = &world->contacts;
+  const solver_body *sb = world->solver_bodies;
+  const step_context *ctx = ai->ctx;
+  const body *S = &world->bodies[s], *O = &world->bodies[o];
+  double fall = S->inv_mass > 0.0 || O->inv_mass > 0.0 ? ctx->accel * ctx->dt : 0.0;
+  int32_t pieces = (S->shape.piece_count > 1 ? S->shape.piece_count : 1)
+                   * (O->shape.piece_count > 1 ? O->shape.piece_count : 1);
+  if (ai->full || O->sensor || S->sensor || have_contact (ai, s, o))
+    return;
+  /* room kept for it (contacts_headroom): what does not fit is left for
+   * the next detection */
+  if (c->count + pieces > c->cap || c->point_count + MANIFOLD_MAX_POINTS * pieces > c->pool_cap)
+    {
+      ai->full = 1;
+      return;
+    }
+  detect_pair (world, s, o, ctx, ctx->dt * (closing_speed (S, &sb[s], O, &sb[o]) + fall));
+}
+
+int32_t contacts_after_impacts (carom_world *world, const step_context *ctx)
+{
+  contacts *c = &world->contacts;
+  const solver_body *sb = world->solver_bodies;
+  double *reach = world->cold_load; /* free until contact_cold_start */
+  sweep_entry *boxes = world->broad.scratch; /* free after the detection */
+  int32_t i, k = 0, first = c->count, *adj, *start, *other;
+  after_impacts ai;
+  if (c->impacts == 0)
+    return first;
+  for (i = 0; i < world->slot_count; ++i)
+    {
+      const body *B = &world->bodies[i];
+      double r;
+      reach[i] = 0.0;
+      if (sb[i].moves != MOVES_DYNAMIC || (sb[i].v.x == B->v.x && sb[i].v.y == B->v.y && sb[i].w == B->w))
+        continue;
+      /* before its impacts it moved at its old velocities, after them at
+       * its new ones: from where it began, no further than the faster of
+       * the two would take it in the whole step. The detection's pairs
+       * looked ahead by the bodies' relative motion at the old ones: any
+       * change can bring it to a body it had no contact with. */
+      r = fmax (body_reach_at (B, sb[i].v, sb[i].w, ctx->dt, ctx->accel), world->broad.reach[i]);
+      if (!body_swept (B, r, ctx->dt, ctx->accel, ctx->continuous))
+        continue;
+      reach[i] = r;
+      broadphase_box (world, i, r, &boxes[k++]);
+    }
+  if (k == 0)
+    return first;
+  solver_contact_adjacency (world, &start, &adj, &other);
+  ai.ctx = ctx, ai.start = start, ai.other = other, ai.full = 0;
+  broadphase_query (world, boxes, k, reach, on_struck_pair, &ai);
+  return first;
+}
+
+int32_t contacts_headroom (const carom_world *world)
+{
+  return world->contacts.bouncy_found > 0 ? world->contacts.bouncy_found + 8 : 0;
+}
+
 /* Put last step's contacts back, as if the last contacts_update had not
  * run (its own failure, or a later stage's, within the same sub-step). */
 void contacts_undo (carom_world *world)
@@ -755,6 +869,11 @@ static void point_contacts (contacts *c)
     c->list[i].points = c->pool + c->list[i].first_point;
 }
 
+void contacts_point_again (carom_world *world)
+{
+  point_contacts (&world->contacts);
+}
+
 carom_status contacts_update (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
@@ -767,6 +886,7 @@ carom_status contacts_update (carom_world *world, const step_context *ctx)
   c->old_pool = c->pool, c->old_pool_cap = c->pool_cap;
   c->pool = tp, c->pool_cap = tpcap;
   c->point_count = 0;
+  c->bouncy_found = 0;
   c->sensor_count = 0;
   c->out_of_memory = 0;
   c->cursor = 0;
@@ -976,6 +1096,6 @@ carom_status carom_world_get_contact (const carom_world *world, int32_t index, c
   if (ny)
     *ny = p->normal.y;
   if (depth)
-    *depth = p->depth;
+    *depth = p->found;
   return CAROM_OK;
 }

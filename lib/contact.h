@@ -10,7 +10,13 @@ struct step_context;
 
 typedef struct contact_point {
   vec2 point, normal;   /* world frame at detection; normal from body a to body b */
-  double depth;         /* penetration at detection (negative: apart) */
+  double depth;         /* penetration at detection (negative: apart); for
+                           an impact's point, minus its separation at the
+                           start of the step along the touch's normal
+                           (impact.c), where the sub-steps follow it from */
+  double found;         /* the penetration where point and normal were
+                           found: at detection, or at the touch of an
+                           impact (carom_world_get_contact) */
   uint32_t feature;
   int32_t in_impact;    /* takes part in its contact's impact
                            (contact_impacts): near at detection, meeting
@@ -101,6 +107,7 @@ typedef struct contacts {
   int32_t fine_count;    /* contacts marked fine this step */
   int32_t cold_count;    /* contacts marked cold this step */
   int32_t bouncy_count;  /* contacts with restitution this step (contact_prepare) */
+  int32_t bouncy_found;  /* contacts with restitution the detection made */
   int32_t impacts;       /* impacts contact_impacts made this step */
   const int32_t *rest;   /* this step's contacts the batches leave to the
                             one-at-a-time passes (contact_batch_prepare) */
@@ -119,6 +126,8 @@ void contacts_destroy (struct carom_world *world);
 /* Detect all contacts at the current positions, carrying over the impulses
  * of matching points from the previous detection. */
 carom_status contacts_update (struct carom_world *world, const struct step_context *ctx);
+/* Point every contact at its points again (after the pool moved). */
+void contacts_point_again (struct carom_world *world);
 /* Undo the last contacts_update (a later stage of the sub-step failed). */
 void contacts_undo (struct carom_world *world);
 /* Whether some convex piece of a overlaps some piece of b (or the circles)
@@ -172,6 +181,16 @@ const convex_piece *contact_piece (const struct carom_world *world, const contac
  * collision, a bullet, or a body that moves fast for its size), judged
  * from the reach the detection found (broadphase.reach). */
 int contact_pair_swept (const struct carom_world *world, int32_t a, int32_t b, const struct step_context *ctx);
+/* After the impacts of a step (contact_impacts): the pairs a body whose
+ * velocities they changed can now reach in the step that have no contact,
+ * detected looking as far ahead as the bodies' velocities before and after
+ * carry them, and added to the list (the room kept for them,
+ * contacts_headroom, bounds how many; the rest wait for the next
+ * detection). Returns the index of the first contact added. */
+int32_t contacts_after_impacts (struct carom_world *world, const struct step_context *ctx);
+/* The contacts the update keeps room for beyond the detection's
+ * (contacts_after_impacts): none without restitution. */
+int32_t contacts_headroom (const struct carom_world *world);
 /* Forget every contact that involves `slot` (the body is being removed). */
 void contacts_forget_body (struct carom_world *world, int32_t slot);
 

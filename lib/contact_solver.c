@@ -121,12 +121,18 @@ static int begins_resting (const contact *k, const step_context *ctx)
 void contact_prepare (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
-  solver_body *sb = world->solver_bodies;
-  int32_t i, j;
   c->fine_count = 0;
   c->cold_count = 0;
   c->bouncy_count = 0;
-  for (i = 0; i < c->count; ++i)
+  contact_prepare_from (world, ctx, 0);
+}
+
+void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t first)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  int32_t i, j;
+  for (i = first; i < c->count; ++i)
     {
       contact *k = &c->list[i];
       const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];

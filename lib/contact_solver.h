@@ -14,6 +14,9 @@ struct carom_world;
 /* Lever arms, effective masses and the separation to follow, from the
  * contacts detected at the start of the step. */
 void contact_prepare (struct carom_world *world, const step_context *ctx);
+/* The same for the contacts from `first` on, added since (their counts
+ * added to the step's). */
+void contact_prepare_from (struct carom_world *world, const step_context *ctx, int32_t first);
 /* Apply the impulses the contacts carry again (warm starting). `remaining`
  * (in this and the passes below) is the time from the impulses to the end
  * of the step. */

@@ -29,7 +29,8 @@ static int32_t table_size (int32_t count)
 int events_reserve (carom_world *world)
 {
   events *e = &world->events;
-  int32_t now = world->contacts.count + world->contacts.sensor_count, last = e->count[e->cur];
+  int32_t now = world->contacts.count + contacts_headroom (world) + world->contacts.sensor_count;
+  int32_t last = e->count[e->cur];
   int32_t fresh = 1 - e->cur, table = table_size (last);
   /* this update's pairs, and the last one's that sleep on (events_update) */
   return mem_reserve (&world->allocator, (void **) &e->touches[fresh], &e->cap[fresh], now + last, sizeof (touch))

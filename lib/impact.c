@@ -37,11 +37,6 @@
  * most this many pairwise impacts per contact of the step: with e < 1 a
  * row rings on ever more softly, and the rest is left to the sub-steps. */
 #define IMPACT_MAX_EVENTS 64
-/* contact_point.in_impact of a point an impact bounced, and of one that
- * bounced before its contact struck again at another point (it takes no
- * part in that impact) */
-#define IMPACT_BOUNCED 2
-#define IMPACT_DONE 3
 /* A contact an impact acted on is searched for a next touch within the step
  * from this fraction of the step after it (its points are leaving: at the
  * impact itself they still touch), at most this many times a step. */
@@ -50,6 +45,9 @@
 /* Only for contacts whose moving bodies touched at most this many other
  * moving bodies each at detection (sparse). */
 #define REIMPACT_DEGREE 2
+/* Times a step looks for the new pairs of bodies its impacts set moving
+ * (contacts_after_impacts), each after the impacts found so far. */
+#define AFTER_IMPACT_PASSES 4
 
 /* How far two bodies' centres can close along n in the step: their
  * relative velocity's approach, and what gravity adds (at most one body's
@@ -140,6 +138,7 @@ static void impact_point (contact *k, contact_point *p, const manifold_point *q,
   p->normal = q->normal;
   p->feature = q->feature;
   p->depth = -s0;
+  p->found = q->depth;
   p->ra = ra0;
   p->rb = rb0;
   p->adjusted = s0 - v2_dot (v2_sub (rb0, ra0), q->normal);
@@ -450,6 +449,7 @@ static int impact_event (contact *k, solver_body *a, solver_body *b, impact_shif
   shifts[k->a].a -= (a->w - wa) * t;
   shifts[k->b].p = v2_mad (shifts[k->b].p, -t, v2_sub (b->v, vb));
   shifts[k->b].a -= (b->w - wb) * t;
+  shifts[k->a].at = shifts[k->b].at = t;
   /* the bounce is done: the end of the step does not bounce its points
    * again, nor does a sub-step's first push count as its meeting */
   for (j = 0; j < k->count; ++j)
@@ -573,13 +573,13 @@ void contact_impacts (carom_world *world, const step_context *ctx)
   impact_shift *shifts = world->impact_shifts;
   int32_t *seeds = world->restitution_list, *work = world->batch_scratch, *events = world->impact_events;
   int32_t *start = NULL, *adj = NULL;
-  int32_t i, j, n = 0, head = 0, round = 0;
+  int32_t i, j, n = 0, head = 0, round = 0, passes = 0;
   double fastest = 0.0, tol;
   c->impacts = 0;
   if (c->bouncy_count == 0)
     return;
   for (i = 0; i <= world->slot_count; ++i)
-    shifts[i].p = v2 (0.0, 0.0), shifts[i].a = 0.0;
+    shifts[i].p = v2 (0.0, 0.0), shifts[i].a = 0.0, shifts[i].at = 0.0;
   for (i = 0; i < c->count; ++i)
     {
       contact *k = &c->list[i];
@@ -675,6 +675,29 @@ void contact_impacts (carom_world *world, const step_context *ctx)
             seed_insert (c, seeds, &head, &n, c->count, work[i], at);
           else if (at == TOI_APART)
             impact_inert (k);
+        }
+      if (head == n && passes < AFTER_IMPACT_PASSES)
+        {
+          /* bodies the impacts set moving faster than their detection
+           * looked ahead for: their new pairs, met in turn */
+          int32_t first = contacts_after_impacts (world, ctx), m;
+          ++passes;
+          if (first < c->count)
+            {
+              contact_prepare_from (world, ctx, first);
+              solver_contact_adjacency (world, &start, &adj, NULL);
+              for (m = first; m < c->count; ++m)
+                {
+                  contact *k = &c->list[m];
+                  double from = fmax (shifts[k->a].at, shifts[k->b].at), at;
+                  k->queued = 0;
+                  at = impact_again (world, k, ctx, from, 0);
+                  if (at >= 0.0)
+                    seed_insert (c, seeds, &head, &n, c->count, m, at);
+                  else if (at == TOI_APART)
+                    impact_inert (k);
+                }
+            }
         }
     }
   /* what the end of the step bounces (contact_restitution) is measured on

@@ -8,6 +8,12 @@
 
 struct carom_world;
 
+/* contact_point.in_impact of a point an impact bounced, and of one that
+ * bounced before its contact struck again at another point (it takes no
+ * part in that impact) */
+#define IMPACT_BOUNCED 2
+#define IMPACT_DONE 3
+
 /* In contact_prepare, for contact k once its points are set up: when its
  * bodies may fly free into an impact within the step, its points become
  * those of the first touch (toi.c), with the lever arms of that moment; a

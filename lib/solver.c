@@ -124,8 +124,20 @@ int solver_reserve (carom_world *world)
   /* shock.c: levels, adjacency starts, queue and marks (or the cold
    * start's supports) per body; adjacency (two per contact), the level
    * order, and the adjacency's other bodies (two per contact) per contact */
-  int32_t need = 4 * world->slot_count + 1 + 5 * world->contacts.count;
-  int32_t batches = world->contacts.count / BATCH_LANES + 2 * CONSTRAINT_COLOURS;
+  contacts *c = &world->contacts;
+  int32_t room = contacts_headroom (world), count = c->count + room;
+  int32_t need = 4 * world->slot_count + 1 + 5 * count;
+  int32_t batches = count / BATCH_LANES + 2 * CONSTRAINT_COLOURS;
+  /* the contacts added after the impacts (contacts_after_impacts) go in
+   * room kept now: nothing is allocated within the step */
+  if (room > 0)
+    {
+      if (!mem_reserve (&world->allocator, (void **) &c->list, &c->cap, count, sizeof (contact))
+          || !mem_reserve (&world->allocator, (void **) &c->pool, &c->pool_cap,
+                           c->point_count + MANIFOLD_MAX_POINTS * room, sizeof (contact_point)))
+        return 0;
+      contacts_point_again (world); /* the pool may have moved */
+    }
   return mem_reserve (&world->allocator, (void **) &world->solver_bodies, &world->solver_cap, world->slot_count + 1,
                       sizeof (solver_body))
          && mem_reserve (&world->allocator, (void **) &world->batches, &world->batch_cap, batches,
@@ -133,18 +145,18 @@ int solver_reserve (carom_world *world)
          && mem_reserve (&world->allocator, (void **) &world->colour_used, &world->colour_cap, world->slot_count,
                          sizeof (uint32_t))
          && mem_reserve (&world->allocator, (void **) &world->batch_scratch, &world->batch_scratch_cap,
-                         2 * world->contacts.count + 4 * CONSTRAINT_COLOURS + 1, sizeof (int32_t))
+                         2 * count + 4 * CONSTRAINT_COLOURS + 1, sizeof (int32_t))
          && mem_reserve (&world->allocator, (void **) &world->solver_scratch, &world->scratch_cap, need,
                          sizeof (int32_t))
          && mem_reserve (&world->allocator, (void **) &world->cold_load, &world->cold_load_cap, world->slot_count,
                          sizeof (double))
          && contact_shock_reserve (world) && joint_tree_reserve (world)
          && mem_reserve (&world->allocator, (void **) &world->restitution_list, &world->restitution_cap,
-                         world->contacts.count, sizeof (int32_t))
+                         count, sizeof (int32_t))
          && mem_reserve (&world->allocator, (void **) &world->impact_shifts, &world->impact_shift_cap,
                          world->slot_count + 1, sizeof (impact_shift))
          && mem_reserve (&world->allocator, (void **) &world->impact_events, &world->impact_events_cap,
-                         world->contacts.count, sizeof (int32_t));
+                         count, sizeof (int32_t));
 }
 
 void solver_destroy (carom_world *world)

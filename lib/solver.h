@@ -29,6 +29,7 @@ enum {
 typedef struct impact_shift {
   vec2 p;
   double a;
+  double at; /* the time of the last impact that changed its velocities */
 } impact_shift;
 
 /* solver_body.constrained: some constraint acts on the body this step (it

@@ -790,6 +790,53 @@ static void test_kept_pairs_out_of_memory (void **state)
   each_update_allocation_fails_once (&u);
 }
 
+/* Impacts that set bodies moving further than their detection looked:
+ * three rows of five equal balls (radius 0.1, e = 1), 8 mm apart (beyond
+ * the contact margin at rest), struck by a first ball touching the next at
+ * 3 m/s, falling side by side, continuous collision on. Within the first
+ * step each struck ball meets the next (contacts_after_impacts, in the room
+ * the update keeps for them); 20 updates. */
+static void struck_build (carom_world *w, int which, void *data)
+{
+  carom_body_def d;
+  int row, i;
+  (void) which;
+  assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
+  assert_status (carom_body_def_init (&d, sizeof d), CAROM_OK);
+  d.restitution = 1.0, d.friction = 0.0;
+  for (row = 0; row < 3; ++row)
+    for (i = 0; i < 5; ++i)
+      {
+        d.x = i == 0 ? 0.0 : 0.2 + 0.208 * (i - 1), d.y = 10.0 + 2.0 * row;
+        d.vx = i == 0 ? 3.0 : 0.0;
+        assert_status (carom_world_add_circle (w, &d, 0.1, &((carom_body_id *) data)[15 * which + 5 * row + i]),
+                       CAROM_OK);
+      }
+}
+
+static carom_body_id struck_ids[30];
+
+static void struck_check (carom_world *w)
+{
+  int row, i;
+  /* the last ball of each row leaves at the striker's speed, the others
+   * stay (world 0's ids) */
+  for (row = 0; row < 3; ++row)
+    for (i = 0; i < 5; ++i)
+      {
+        double vx;
+        assert_status (carom_body_get_velocity (w, struck_ids[5 * row + i], &vx, NULL), CAROM_OK);
+        assert_true (fabs (vx - (i == 4 ? 3.0 : 0.0)) < 1e-9);
+      }
+}
+
+static void test_struck_bodies_out_of_memory (void **state)
+{
+  update_run u = { 0, 20, struck_build, NULL, struck_check, struck_ids };
+  (void) state;
+  each_update_allocation_fails_once (&u);
+}
+
 /* The grid broad phase (worlds of GRID_MIN_BODIES bodies and more): each
  * allocation the first update makes fails once, in a world of 4100 bodies
  * falling onto a floor; the update reports OUT_OF_MEMORY and leaves every
@@ -964,6 +1011,7 @@ int main (void)
     cmocka_unit_test (test_fail_each_allocation_once_substeps),
     cmocka_unit_test (test_rain_update_out_of_memory_with_substeps),
     cmocka_unit_test (test_kept_pairs_out_of_memory),
+    cmocka_unit_test (test_struck_bodies_out_of_memory),
     cmocka_unit_test (test_grid_update_out_of_memory),
     cmocka_unit_test (test_fail_every_allocation_from_k),
     cmocka_unit_test (test_scene_text_out_of_memory),

@@ -235,7 +235,8 @@ def _world_def(gravity=(0.0, 0.0), restitution=0.0, friction=0.0, substeps=4,
 Contact = collections.namedtuple("Contact", "a b point normal depth")
 Contact.__doc__ = """A contact point: bodies a and b, the point (x, y), the unit
 normal (nx, ny) from a to b, and the penetration depth (negative when the
-bodies are apart but within the contact margin)."""
+bodies are apart but within the contact margin), as found at the start of the
+update, or at the touch for a point an impact moved within it."""
 
 
 class Circle:
