@@ -379,7 +379,10 @@ pub struct ShapeInfo {
     pub friction: f64,
 }
 
-/// One contact point: bodies, point, unit normal from a to b, depth.
+/// One contact point: bodies, point, unit normal from a to b, and the
+/// penetration depth (negative when apart within the contact margin), as
+/// found at the start of the update, or at the touch for a point an impact
+/// moved within it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Contact {
     pub a: carom_body_id,
