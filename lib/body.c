@@ -153,6 +153,8 @@ carom_body_id body_commit (carom_world *world, const carom_body_def *def, const 
   b->alive = 1;
   b->type = def->type;
   b->shape = *s;
+  if (s->piece_count > world->most_pieces)
+    world->most_pieces = s->piece_count;
   b->p = v2 (def->x, def->y);
   b->angle = def->angle;
   b->density = def->density;

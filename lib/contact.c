@@ -747,7 +747,7 @@ static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
 typedef struct after_impacts {
   const step_context *ctx;
   const int32_t *start, *other; /* the contacts' adjacency before any was added */
-  int full;                     /* the room kept for new contacts ran out */
+  int full;                     /* that room ran out */
 } after_impacts;
 
 /* Whether bodies s and o have a contact (of those before this stage). */
@@ -792,9 +792,11 @@ static void on_struck_pair (carom_world *world, int32_t s, int32_t o, void *user
                    * (O->shape.piece_count > 1 ? O->shape.piece_count : 1);
   if (ai->full || O->sensor || S->sensor || have_contact (ai, s, o))
     return;
-  /* room kept for it (contacts_headroom): what does not fit is left for
-   * the next detection */
-  if (c->count + pieces > c->cap || c->point_count + MANIFOLD_MAX_POINTS * pieces > c->pool_cap)
+  /* room kept for it (contacts.room_count): what does not fit is left for
+   * the next detection. The list and the pool may hold more, but the
+   * solver's arrays per contact were sized for that room alone (and the
+   * headroom itself grows with each bouncy contact added here). */
+  if (c->count + pieces > c->room_count || c->point_count + MANIFOLD_MAX_POINTS * pieces > c->room_points)
     {
       ai->full = 1;
       return;
@@ -840,7 +842,11 @@ int32_t contacts_after_impacts (carom_world *world, const step_context *ctx)
 
 int32_t contacts_headroom (const carom_world *world)
 {
-  return world->contacts.bouncy_found > 0 ? world->contacts.bouncy_found + 8 : 0;
+  /* a pair of compounds has a contact for each two pieces: room for one
+   * such pair of the largest bodies, up to AFTER_IMPACT_PAIR_ROOT squared */
+  int32_t most = world->most_pieces > 1 ? world->most_pieces : 1;
+  int32_t pair = most > AFTER_IMPACT_PAIR_ROOT ? AFTER_IMPACT_PAIR_ROOT * AFTER_IMPACT_PAIR_ROOT : most * most;
+  return world->contacts.bouncy_found > 0 ? world->contacts.bouncy_found + 8 + pair : 0;
 }
 
 /* Put last step's contacts back, as if the last contacts_update had not
@@ -887,6 +893,7 @@ carom_status contacts_update (carom_world *world, const step_context *ctx)
   c->pool = tp, c->pool_cap = tpcap;
   c->point_count = 0;
   c->bouncy_found = 0;
+  c->room_count = c->room_points = 0;
   c->sensor_count = 0;
   c->out_of_memory = 0;
   c->cursor = 0;

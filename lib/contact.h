@@ -108,6 +108,8 @@ typedef struct contacts {
   int32_t cold_count;    /* contacts marked cold this step */
   int32_t bouncy_count;  /* contacts with restitution this step (contact_prepare) */
   int32_t bouncy_found;  /* contacts with restitution the detection made */
+  int32_t room_count;    /* the most contacts and points this step may */
+  int32_t room_points;   /* hold: what solver_reserve kept room for */
   int32_t impacts;       /* impacts contact_impacts made this step */
   const int32_t *rest;   /* this step's contacts the batches leave to the
                             one-at-a-time passes (contact_batch_prepare) */
@@ -189,7 +191,13 @@ int contact_pair_swept (const struct carom_world *world, int32_t a, int32_t b, c
  * detection). Returns the index of the first contact added. */
 int32_t contacts_after_impacts (struct carom_world *world, const struct step_context *ctx);
 /* The contacts the update keeps room for beyond the detection's
- * (contacts_after_impacts): none without restitution. */
+ * (contacts_after_impacts): none without restitution; else one for each
+ * contact with restitution, 8 more, and those of one pair of the
+ * world's largest compounds (at most AFTER_IMPACT_PAIR_ROOT squared).
+ * solver_reserve asks once per update and keeps the sum in
+ * contacts.room_count, which every array per contact is sized by: the
+ * headroom itself grows as contacts with restitution are added. */
+#define AFTER_IMPACT_PAIR_ROOT 16
 int32_t contacts_headroom (const struct carom_world *world);
 /* Forget every contact that involves `slot` (the body is being removed). */
 void contacts_forget_body (struct carom_world *world, int32_t slot);

@@ -29,7 +29,7 @@ static int32_t table_size (int32_t count)
 int events_reserve (carom_world *world)
 {
   events *e = &world->events;
-  int32_t now = world->contacts.count + contacts_headroom (world) + world->contacts.sensor_count;
+  int32_t now = world->contacts.room_count + world->contacts.sensor_count; /* after solver_reserve */
   int32_t last = e->count[e->cur];
   int32_t fresh = 1 - e->cur, table = table_size (last);
   /* this update's pairs, and the last one's that sleep on (events_update) */

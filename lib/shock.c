@@ -222,7 +222,7 @@ static void shock_pass (carom_world *world, const step_context *ctx, double tol)
 int contact_shock_reserve (carom_world *world)
 {
   return mem_reserve (&world->allocator, (void **) &world->shock_rows, &world->shock_cap,
-                      world->contacts.count + contacts_headroom (world), sizeof (shock_row));
+                      world->contacts.room_count, sizeof (shock_row)); /* solver_reserve's */
 }
 
 void contact_shock_destroy (carom_world *world)

@@ -129,7 +129,9 @@ int solver_reserve (carom_world *world)
   int32_t need = 4 * world->slot_count + 1 + 5 * count;
   int32_t batches = count / BATCH_LANES + 2 * CONSTRAINT_COLOURS;
   /* the contacts added after the impacts (contacts_after_impacts) go in
-   * room kept now: nothing is allocated within the step */
+   * room kept now: nothing is allocated within the step. Every array per
+   * contact, here and in events_reserve, is sized by room_count, and
+   * contacts_after_impacts adds none past it. */
   if (room > 0)
     {
       if (!mem_reserve (&world->allocator, (void **) &c->list, &c->cap, count, sizeof (contact))
@@ -138,6 +140,8 @@ int solver_reserve (carom_world *world)
         return 0;
       contacts_point_again (world); /* the pool may have moved */
     }
+  c->room_count = count;
+  c->room_points = c->point_count + MANIFOLD_MAX_POINTS * room;
   return mem_reserve (&world->allocator, (void **) &world->solver_bodies, &world->solver_cap, world->slot_count + 1,
                       sizeof (solver_body))
          && mem_reserve (&world->allocator, (void **) &world->batches, &world->batch_cap, batches,

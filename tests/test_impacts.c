@@ -811,6 +811,121 @@ static void test_struck_bodies_meet_what_the_detection_did_not_see (void **state
   print_message ("rows beyond the margin: largest error against impacts in turn %.3g\n", worst);
 }
 
+/* A static comb (a concave polygon of `teeth` teeth 2 cm wide every 5 cm,
+ * pointing to -x from x = tip, 40 cm long, on a 20 cm spine), its
+ * centroid placed where the outline says. */
+static void add_comb (carom_world *w, int teeth, double tip, double y)
+{
+  double xy[2 * (4 * 24 + 2)], area = 0.0, cx = 0.0, cy = 0.0;
+  int n = 0, i, m;
+  carom_body_def d;
+  carom_body_id id;
+  assert_true (teeth <= 24);
+  xy[n++] = tip + 0.6, xy[n++] = y - 0.025 * teeth;
+  xy[n++] = tip + 0.6, xy[n++] = y + 0.025 * teeth;
+  for (i = teeth - 1; i >= 0; --i)
+    {
+      double y0 = y - 0.025 * teeth + 0.05 * i;
+      xy[n++] = tip + 0.4, xy[n++] = y0 + 0.05;
+      xy[n++] = tip, xy[n++] = y0 + 0.04;
+      xy[n++] = tip, xy[n++] = y0 + 0.02;
+      xy[n++] = tip + 0.4, xy[n++] = y0 + 0.01;
+    }
+  m = n / 2;
+  for (i = 0; i < m; ++i)
+    {
+      int j = (i + 1) % m;
+      double c = xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
+      area += c, cx += (xy[2 * i] + xy[2 * j]) * c, cy += (xy[2 * i + 1] + xy[2 * j + 1]) * c;
+    }
+  carom_body_def_init (&d, sizeof d);
+  d.type = CAROM_STATIC;
+  d.x = cx / (3.0 * area), d.y = cy / (3.0 * area);
+  assert_status (carom_world_add_polygon (w, &d, xy, m, &id), CAROM_OK);
+}
+
+/* A striker (r = 0.1, e = 1) sets a resting ball moving at v0 into a
+ * static comb it had no contact with: a pair with a contact for each of
+ * the comb's pieces, found after the impact (contacts_after_impacts).
+ * Forty touching balls without restitution far away first make the
+ * contact list's room much larger than the update keeps for contacts
+ * added after the impacts. After each update the contacts fit the room
+ * every array per contact was sized by (contacts.room_count: an update
+ * that went past it wrote past those arrays). Returns how deep the
+ * deepest ball ended an update past the comb's tips. */
+static double comb_run (int rows, int teeth, double v0)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_body_def d;
+  carom_body_id id, balls[16];
+  double deepest = 0.0;
+  int i, step;
+  assert_true (rows <= 16);
+  carom_world_def_init (&def, sizeof def);
+  def.restitution = 1.0;
+  def.friction = 0.0;
+  def.gravity_y = 0.0;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
+  for (i = 0; i < 40; ++i)
+    {
+      carom_body_def_init (&d, sizeof d);
+      d.restitution = 0.0;
+      d.x = 100.0 + 0.2 * i, d.y = 50.0;
+      assert_status (carom_world_add_circle (w, &d, 0.1, &id), CAROM_OK);
+    }
+  for (i = 0; i < rows; ++i)
+    {
+      add_comb (w, teeth, 0.75, 2.0 * i);
+      carom_body_def_init (&d, sizeof d);
+      d.y = 2.0 * i, d.vx = v0;
+      assert_status (carom_world_add_circle (w, &d, 0.1, &id), CAROM_OK);
+      d.x = 0.2, d.vx = 0.0;
+      assert_status (carom_world_add_circle (w, &d, 0.1, &balls[i]), CAROM_OK);
+    }
+  for (step = 0; step < 6; ++step)
+    {
+      const contacts *c = &w->contacts;
+      assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
+      if (!(c->count <= c->room_count && c->point_count <= c->room_points))
+        fail_msg ("%d combs of %d teeth at %g m/s: %d contacts and %d points in room for %d and %d", rows, teeth, v0,
+                  c->count, c->point_count, c->room_count, c->room_points);
+      for (i = 0; i < rows; ++i)
+        {
+          double x, y;
+          carom_body_get_position (w, balls[i], &x, &y);
+          assert_true (isfinite (x) && isfinite (y));
+          deepest = fmax (deepest, x + 0.1 - 0.75);
+        }
+    }
+  carom_world_destroy (w);
+  return deepest;
+}
+
+/* One comb: the room kept holds the pair, and the ball never ends an
+ * update past the tips (without it, the pair waited for the next
+ * detection and the ball was stopped 5 cm deep by the last guard).
+ * Sixteen: more than the room holds, those left over wait. */
+static void test_struck_body_meets_a_compound_within_the_room_kept (void **state)
+{
+  static const int teeth[] = { 4, 12, 20 };
+  static const double speeds[] = { 30.0, 45.0 };
+  int t, v, rows;
+  (void) state;
+  for (rows = 1; rows <= 16; rows += 15)
+    for (t = 0; t < 3; ++t)
+      for (v = 0; v < 2; ++v)
+        {
+          double deepest = comb_run (rows, teeth[t], speeds[v]);
+          print_message ("%d comb(s) of %d teeth, struck at %g m/s: deepest %.3g m past the tips\n", rows, teeth[t],
+                         speeds[v], deepest);
+          if (rows == 1 && !(deepest <= 0.0))
+            fail_msg ("a ball struck into a comb of %d teeth at %g m/s sank %.3g m into it", teeth[t], speeds[v],
+                      deepest);
+        }
+}
+
 /* Coulomb friction in an impact: a disc (radius r, no gravity) strikes a
  * static floor at normal speed vn and tangent speed vt, e = 0.5, with
  * continuous collision on. The impact's normal impulse is J = (1 + e) m vn;
@@ -1093,6 +1208,7 @@ int main (void)
     cmocka_unit_test (test_bounce_apexes_are_the_closed_form),
     cmocka_unit_test (test_rows_with_gaps_are_impacts_in_turn),
     cmocka_unit_test (test_struck_bodies_meet_what_the_detection_did_not_see),
+    cmocka_unit_test (test_struck_body_meets_a_compound_within_the_room_kept),
     cmocka_unit_test (test_spinning_polygons_strike_again_within_a_step),
     cmocka_unit_test (test_elastic_ball_keeps_its_height),
     cmocka_unit_test (test_free_clusters_keep_momentum_and_never_gain_energy),
