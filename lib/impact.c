@@ -143,7 +143,18 @@ static void impact_point (contact *k, contact_point *p, const manifold_point *q,
   p->rb = rb0;
   p->adjusted = s0 - v2_dot (v2_sub (rb0, ra0), q->normal);
   impact_arms (k, p, ba, bb, a, b, ctx, t, ra, rb);
-  p->in_impact = 1;
+  /* a point that bounced earlier in the step stays bounced when it is of a
+   * later touch: it takes part in that impact as any point, but its bounce
+   * is done, and the end of the step must not take its speed now, leaving,
+   * for an approach to reflect (contact_restitution would pull the bounce
+   * back, and contact_time_of_impact move the bodies for it) */
+  if (p->in_impact == IMPACT_BOUNCED || p->in_impact == IMPACT_DONE)
+    {
+      p->in_impact = IMPACT_BOUNCED;
+      p->approach = 0.0;
+    }
+  else
+    p->in_impact = 1;
 }
 
 /* A detected point of an impact that the touch has no point for: it keeps
