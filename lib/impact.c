@@ -488,9 +488,11 @@ static double impact_again (carom_world *world, contact *k, const step_context *
   double from = struck ? t + REIMPACT_DELAY * ctx->dt : t, at;
   uint32_t taken;
   int32_t j, first = 0;
+  /* not searched: the sub-steps take it as any contact (not TOI_APART,
+   * which would leave it without impulse for the rest of the step) */
   if (k->restitution == 0.0 || k->reimpacts >= REIMPACT_MAX || k->count == 0
       || (k->piece_a < 0 && k->piece_b < 0 && ba->shape.kind == CAROM_SHAPE_POLYGON))
-    return -1.0;
+    return TOI_UNKNOWN;
   /* struck at the start while overlapping: still overlapping after it */
   for (j = 0; j < k->count && struck && t == 0.0; ++j)
     if (k->points[j].depth > 0.0)
