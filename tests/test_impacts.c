@@ -1149,6 +1149,60 @@ static void test_elastic_gas_with_continuous_collision_keeps_its_energy (void **
       }
 }
 
+/* A world with a static floor under gravity (e, continuous collision on)
+ * and one body resting its lowest corner on it: a box 2 s x s (n = 4) or a
+ * regular n-gon of circumradius s, at angle a0, spinning at `spin`, its
+ * lowest corner moving at (u, -d). Its corners about its centre at a0 go
+ * in cx, cy (n of them). */
+static carom_world *corner_world (int n, double s, double a0, double e, double spin, double u, double d, double *cx,
+                                  double *cy, carom_body_id *id)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_body_def bd;
+  double lowx = 0.0, lowy = INFINITY;
+  int i;
+  for (i = 0; i < n; ++i)
+    {
+      if (n == 4)
+        {
+          double hx = (i == 0 || i == 3) ? s : -s, hy = i < 2 ? 0.5 * s : -0.5 * s;
+          cx[i] = cos (a0) * hx - sin (a0) * hy, cy[i] = sin (a0) * hx + cos (a0) * hy;
+        }
+      else
+        cx[i] = s * cos (a0 + 2.0 * M_PI * i / n), cy[i] = s * sin (a0 + 2.0 * M_PI * i / n);
+      if (cy[i] < lowy)
+        lowx = cx[i], lowy = cy[i];
+    }
+  carom_world_def_init (&def, sizeof def);
+  def.restitution = e;
+  def.gravity_y = -G;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
+  add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 100.0, 1.0);
+  carom_body_def_init (&bd, sizeof bd);
+  bd.y = -lowy, bd.angle = a0, bd.spin = spin;
+  bd.vx = u + spin * lowy, bd.vy = -d - spin * lowx;
+  if (n == 4)
+    assert_status (carom_world_add_box (w, &bd, 2.0 * s, s, id), CAROM_OK);
+  else
+    assert_status (carom_world_add_regular (w, &bd, n, 2.0 * s * sin (M_PI / n), id), CAROM_OK);
+  return w;
+}
+
+/* How far the body's deepest corner is below the floor (0 if none). */
+static double deepest_corner (const carom_world *w, carom_body_id id, int n, const double *cx, const double *cy,
+                              double a0)
+{
+  double x, y, a, deepest = 0.0;
+  int i;
+  carom_body_get_position (w, id, &x, &y);
+  carom_body_get_angle (w, id, &a);
+  for (i = 0; i < n; ++i)
+    deepest = fmax (deepest, -(y + sin (a - a0) * cx[i] + cos (a - a0) * cy[i]));
+  return deepest;
+}
+
 /* A body rocking on a corner: a box (2 s x s), a triangle or a pentagon
  * (circumradius s, 0.3 to 1 m), e from 0.2 to 1, its lowest corner just
  * touching a static floor under gravity and moving at (u, -d) (|u| < 1,
@@ -1169,47 +1223,15 @@ static void test_body_rocking_on_a_corner_never_sinks_it (void **state)
   (void) state;
   for (run = 0; run < 2000; ++run)
     {
-      int shape = (int) (3.0 * unit_random (&seed)), n = shape == 0 ? 4 : shape == 1 ? 5 : 3, i;
+      int shape = (int) (3.0 * unit_random (&seed)), n = shape == 0 ? 4 : shape == 1 ? 5 : 3;
       double s = 0.3 + 0.7 * unit_random (&seed), e = 0.2 + 0.8 * unit_random (&seed);
       double a0 = 2.0 * M_PI * unit_random (&seed), spin = 20.0 * (unit_random (&seed) - 0.5);
       double d = 0.3 * unit_random (&seed), u = 2.0 * (unit_random (&seed) - 0.5);
-      double cx[5], cy[5], lowx = 0.0, lowy = INFINITY, slop, x, y, a, deepest = 0.0;
-      carom_world *w = NULL;
-      carom_world_def def;
-      carom_body_def bd;
+      double cx[5], cy[5], slop = 0.01 * (n == 4 ? 2.0 * s / 3.0 : s * cos (M_PI / n)), deepest;
       carom_body_id id;
-      for (i = 0; i < n; ++i)
-        {
-          if (n == 4)
-            {
-              double hx = (i == 0 || i == 3) ? s : -s, hy = i < 2 ? 0.5 * s : -0.5 * s;
-              cx[i] = cos (a0) * hx - sin (a0) * hy, cy[i] = sin (a0) * hx + cos (a0) * hy;
-            }
-          else
-            cx[i] = s * cos (a0 + 2.0 * M_PI * i / n), cy[i] = s * sin (a0 + 2.0 * M_PI * i / n);
-          if (cy[i] < lowy)
-            lowx = cx[i], lowy = cy[i];
-        }
-      slop = 0.01 * (n == 4 ? 2.0 * s / 3.0 : s * cos (M_PI / n));
-      carom_world_def_init (&def, sizeof def);
-      def.restitution = e;
-      def.gravity_y = -G;
-      assert_status (carom_world_init (&w, &def), CAROM_OK);
-      assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
-      add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 100.0, 1.0);
-      carom_body_def_init (&bd, sizeof bd);
-      bd.y = -lowy, bd.angle = a0, bd.spin = spin;
-      /* the lowest corner's velocity is (u, -d) */
-      bd.vx = u + spin * lowy, bd.vy = -d - spin * lowx;
-      if (n == 4)
-        assert_status (carom_world_add_box (w, &bd, 2.0 * s, s, &id), CAROM_OK);
-      else
-        assert_status (carom_world_add_regular (w, &bd, n, 2.0 * s * sin (M_PI / n), &id), CAROM_OK);
+      carom_world *w = corner_world (n, s, a0, e, spin, u, d, cx, cy, &id);
       assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
-      carom_body_get_position (w, id, &x, &y);
-      carom_body_get_angle (w, id, &a);
-      for (i = 0; i < n; ++i)
-        deepest = fmax (deepest, -(y + sin (a - a0) * cx[i] + cos (a - a0) * cy[i]));
+      deepest = deepest_corner (w, id, n, cx, cy, a0);
       if (!(deepest <= slop))
         fail_msg ("draw %d: a %d-gon of size %.3f (e %.3f, spin %.3f, corner at (%.3f, %.3f) m/s) sank a corner "
                   "%.3g m, %.3g slops",
@@ -1244,37 +1266,14 @@ static void test_box_landing_flat_never_sinks_a_corner (void **state)
       double s = 0.3 + 0.7 * unit_random (&seed), e = 0.2 + 0.6 * unit_random (&seed);
       double tilt = (3.0 + 17.0 * unit_random (&seed)) * M_PI / 180.0, sign = unit_random (&seed) < 0.5 ? -1.0 : 1.0;
       double a0 = sign * tilt, spin = -sign * 3.0 * unit_random (&seed), d = 0.3 * unit_random (&seed);
-      double cx[4], cy[4], lowx = 0.0, lowy = INFINITY, slop = 0.01 * 2.0 * s / 3.0, deepest = 0.0;
-      carom_world *w = NULL;
-      carom_world_def def;
-      carom_body_def bd;
+      double cx[4], cy[4], slop = 0.01 * 2.0 * s / 3.0, deepest = 0.0;
       carom_body_id id;
-      int i, step;
-      for (i = 0; i < 4; ++i)
-        {
-          double hx = (i == 0 || i == 3) ? s : -s, hy = i < 2 ? 0.5 * s : -0.5 * s;
-          cx[i] = cos (a0) * hx - sin (a0) * hy, cy[i] = sin (a0) * hx + cos (a0) * hy;
-          if (cy[i] < lowy)
-            lowx = cx[i], lowy = cy[i];
-        }
-      carom_world_def_init (&def, sizeof def);
-      def.restitution = e;
-      def.gravity_y = -G;
-      assert_status (carom_world_init (&w, &def), CAROM_OK);
-      assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
-      add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 100.0, 1.0);
-      carom_body_def_init (&bd, sizeof bd);
-      bd.y = -lowy, bd.angle = a0, bd.spin = spin;
-      bd.vx = spin * lowy, bd.vy = -d - spin * lowx; /* the lowest corner at (0, -d) */
-      assert_status (carom_world_add_box (w, &bd, 2.0 * s, s, &id), CAROM_OK);
+      carom_world *w = corner_world (4, s, a0, e, spin, 0.0, d, cx, cy, &id);
+      int step;
       for (step = 0; step < 60; ++step)
         {
-          double x, y, a;
           assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
-          carom_body_get_position (w, id, &x, &y);
-          carom_body_get_angle (w, id, &a);
-          for (i = 0; i < 4; ++i)
-            deepest = fmax (deepest, -(y + sin (a - a0) * cx[i] + cos (a - a0) * cy[i]));
+          deepest = fmax (deepest, deepest_corner (w, id, 4, cx, cy, a0));
         }
       if (!(deepest <= 2.0 * slop))
         fail_msg ("draw %d: a box of size %.3f (e %.3f, tilt %.3f, spin %.3f) sank a corner %.3g m, %.3g slops", run,
