@@ -18,8 +18,8 @@ struct carom_world {
   /* bodies: slots [0, slot_count), some dead; dead slots are reused LIFO */
   body *bodies;
   int32_t slot_count, slot_cap, live_count;
-  int32_t most_pieces;  /* the most convex pieces any body has had (at
-                           least 1): bounds the contacts of one pair */
+  int32_t most_pieces;  /* the most convex pieces any body has had (0
+                           before any): bounds the contacts of one pair */
   int32_t *free_slots;
   int32_t free_count, free_cap;
   double *unload;   /* three per slot, reserved with each slot: removing a
