@@ -35,6 +35,18 @@ int32_t collide_polygon_circle (const convex_piece *a, xform xa, vec2 cb, double
  * point from a towards b. */
 double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis);
 
+/* The largest separation of piece q from p's edges and its edge (the
+ * first to reach it), every edge searched in turn until the largest so far
+ * exceeds `margin`; *outer and *outer_edge the same over the edges that are
+ * not internal (seams.h; -1: none). The SAT test prunes the edges that
+ * cannot win and must give exactly this (tests/test_collision.c). */
+double sat_max_separation_all (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double margin,
+                               int32_t *edge, double *outer, int32_t *outer_edge);
+/* The same, pruned, as collide_polygons_sat and polygons_separation use
+ * it. */
+double sat_max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double margin,
+                           int32_t *edge, double *outer, int32_t *outer_edge);
+
 /* Separating axis theorem with the minimum push vector (thesis 3.2.1): the
  * axis of least overlap among the edge normals of both pieces gives the
  * normal; the contact points, which SAT alone does not give, come from

@@ -2,39 +2,66 @@
  * points from clipping, which the thesis names as SAT's pitfall. */
 #include "collide.h"
 
+/* The gap between an edge of another piece, whose outward normal is n and
+ * whose line lies at `offset` along it, and piece q's nearest vertex (all
+ * in q's frame): the separation along that edge (thesis fig. 3.7). */
+static inline double edge_separation (const convex_piece *q, vec2 n, double offset)
+{
+  double s = INFINITY;
+  int32_t j;
+  for (j = 0; j < q->count; ++j)
+    {
+      double d = v2_dot (n, q->vertices[j]);
+      s = d < s ? d : s;
+    }
+  return s - offset;
+}
+
+/* The same, and the nearest vertex (the first if several). */
+static inline double edge_support (const convex_piece *q, vec2 n, double offset, int32_t *nearest)
+{
+  double s = INFINITY;
+  int32_t j, k = 0;
+  for (j = 0; j < q->count; ++j)
+    {
+      double d = v2_dot (n, q->vertices[j]);
+      int take = d < s;
+      s = take ? d : s;
+      k = take ? j : k;
+    }
+  *nearest = k;
+  return s - offset;
+}
+
 /* The edge of `p` (placed by xp) whose outward normal separates it most from
  * `q` (placed by xq): the candidate axes of thesis fig. 3.7. The separation
  * along an axis is the gap between p's edge and q's nearest vertex; the
- * largest over the axes is minus the length of the minimum push vector. */
-static double max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double margin,
-                              int32_t *edge, double *outer, int32_t *outer_edge)
+ * largest over the axes is minus the length of the minimum push vector.
+ * Every edge in turn, stopping at the first whose separation makes the
+ * largest so far exceed `margin` (a separating axis: no contact, the rest
+ * cannot matter); *outer is the largest over the edges that are not
+ * internal (seams.h), *outer_edge its edge (-1: none). */
+double sat_max_separation_all (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double margin,
+                               int32_t *edge, double *outer, int32_t *outer_edge)
 {
   xform rel = xform_relative (xq, xp); /* p in q's frame */
   double best = -INFINITY, out = -INFINITY;
-  int32_t i, j, best_edge = 0, out_edge = -1;
+  int32_t i, best_edge = 0, out_edge = -1;
   /* the running bests in locals, updated by selects: which edge wins is
    * not predictable, and through the pointers every edge would store and
    * reload them */
   for (i = 0; i < p->count; ++i)
     {
       vec2 n = rot2_apply (rel.q, p->normals[i]);
-      double offset = v2_dot (n, xform_apply (rel, p->vertices[i]));
-      double s = INFINITY;
-      int take;
-      for (j = 0; j < q->count; ++j)
-        {
-          double d = v2_dot (n, q->vertices[j]);
-          s = d < s ? d : s;
-        }
-      s -= offset;
-      take = (s > out) & !piece_edge_internal (p, i);
+      double s = edge_separation (q, n, v2_dot (n, xform_apply (rel, p->vertices[i])));
+      int take = (s > out) & !piece_edge_internal (p, i);
       out = take ? s : out;
       out_edge = take ? i : out_edge;
       take = s > best;
       best = take ? s : best;
       best_edge = take ? i : best_edge;
       if (best > margin)
-        break; /* a separating axis: no contact, the rest cannot matter */
+        break;
     }
   *edge = best_edge;
   *outer = out;
@@ -42,11 +69,86 @@ static double max_separation (const convex_piece *p, xform xp, const convex_piec
   return best;
 }
 
+/* Pieces of more edges than this, or with internal edges, take the plain
+ * search. */
+#define SAT_PRUNE_MAX_EDGES 16
+/* How far a computed separation may lie above its bound computed another
+ * way (in the other piece's frame), through rounding, relative to the size
+ * of the coordinates: a few units in the last place would do. */
+#define SAT_PRUNE_ROUNDING 1e-9
+
+/* sat_max_separation_all's result, bit for bit, without the nearest-vertex
+ * search for edges that cannot win. First the edge that faces q most
+ * (whose line is farthest from q's vertex average, which lies within q) is
+ * searched: its separation is reached by the winner, and its nearest
+ * vertex v is one of q's. No vertex of q is nearer an edge than q's nearest
+ * vertex is, so an edge's separation is at most its gap to the vertex
+ * average and at most its gap to v: an edge with either gap below the
+ * separation reached (by more than rounding) cannot win and is passed
+ * over. Those gaps are taken in p's own frame, without turning each edge
+ * into q's; the rest are searched in order, as the plain search takes them
+ * and with its arithmetic: the same largest, the same first edge to reach
+ * it, the same stop past the margin (when the first edge searched is past
+ * it, the plain search too ends past it, and callers look no further). */
+double sat_max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double margin,
+                          int32_t *edge, double *outer, int32_t *outer_edge)
+{
+  xform rel;
+  vec2 c, v, n;
+  double gap[SAT_PRUNE_MAX_EDGES], reached, least, best = -INFINITY, top = -INFINITY;
+  int32_t i, k, first = 0, best_edge = 0;
+  if (p->count > SAT_PRUNE_MAX_EDGES || p->internal != 0)
+    return sat_max_separation_all (p, xp, q, xq, margin, edge, outer, outer_edge);
+  rel = xform_relative (xq, xp); /* p in q's frame */
+  c = xform_apply_inv (rel, q->center);
+  for (i = 0; i < p->count; ++i)
+    {
+      int take;
+      gap[i] = v2_dot (p->normals[i], v2_sub (c, p->vertices[i]));
+      take = gap[i] > top;
+      top = take ? gap[i] : top;
+      first = take ? i : first;
+    }
+  n = rot2_apply (rel.q, p->normals[first]);
+  reached = edge_support (q, n, v2_dot (n, xform_apply (rel, p->vertices[first])), &k);
+  if (reached > margin)
+    {
+      /* the plain search stops past the margin too */
+      *edge = *outer_edge = first;
+      *outer = reached;
+      return reached;
+    }
+  v = xform_apply_inv (rel, q->vertices[k]);
+  least = reached - SAT_PRUNE_ROUNDING * (fabs (rel.p.x) + fabs (rel.p.y) + fabs (p->center.x) + fabs (p->center.y)
+                                          + fabs (q->center.x) + fabs (q->center.y) + p->bound_radius
+                                          + q->bound_radius);
+  for (i = 0; i < p->count; ++i)
+    {
+      double s;
+      int take;
+      if (i != first && (gap[i] < least || v2_dot (p->normals[i], v2_sub (v, p->vertices[i])) < least))
+        continue; /* it cannot win */
+      n = rot2_apply (rel.q, p->normals[i]);
+      s = i == first ? reached : edge_separation (q, n, v2_dot (n, xform_apply (rel, p->vertices[i])));
+      take = s > best;
+      best = take ? s : best;
+      best_edge = take ? i : best_edge;
+      if (best > margin)
+        break;
+    }
+  /* no internal edges: the largest over the outer ones is the largest
+   * (none when no separation was a number) */
+  *edge = best_edge;
+  *outer = best;
+  *outer_edge = best > -INFINITY ? best_edge : -1;
+  return best;
+}
+
 double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis)
 {
   int32_t edge_a, edge_b, outer_edge;
-  double outer, sa = max_separation (a, xa, b, xb, INFINITY, &edge_a, &outer, &outer_edge);
-  double sb = max_separation (b, xb, a, xa, INFINITY, &edge_b, &outer, &outer_edge);
+  double outer, sa = sat_max_separation (a, xa, b, xb, INFINITY, &edge_a, &outer, &outer_edge);
+  double sb = sat_max_separation (b, xb, a, xa, INFINITY, &edge_b, &outer, &outer_edge);
   *axis = sb > sa ? v2_neg (rot2_apply (xb.q, b->normals[edge_b])) : rot2_apply (xa.q, a->normals[edge_a]);
   return sa > sb ? sa : sb;
 }
@@ -181,10 +283,10 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
   vec2 n_ref, v1, v2_, tangent;
   clip_vertex seg[2], clip1[2], clip2[2];
   m->count = 0;
-  sep_a = max_separation (a, xa, b, xb, margin, &edge_a, &face_a, &outer_a);
+  sep_a = sat_max_separation (a, xa, b, xb, margin, &edge_a, &face_a, &outer_a);
   if (sep_a > margin)
     return 0;
-  sep_b = max_separation (b, xb, a, xa, margin, &edge_b, &face_b, &outer_b);
+  sep_b = sat_max_separation (b, xb, a, xa, margin, &edge_b, &face_b, &outer_b);
   if (sep_b > margin)
     return 0;
   /* the faces a contact may take: none of a seam (seams.h), though the

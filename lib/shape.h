@@ -16,7 +16,9 @@ typedef struct convex_piece {
   int32_t count;
   vec2 *vertices;
   vec2 *normals;
-  vec2 center;         /* centre of its bounding circle (for piece culling) */
+  vec2 center;         /* centre of its bounding circle (for piece culling):
+                          a polygon piece's vertex average, which lies
+                          within it (collide_sat.c prunes by it) */
   double bound_radius; /* every vertex lies within this of `center` */
   int32_t alloc_count; /* vertices allocated (count may be less) */
   double radius;       /* a circle piece's radius (count 0), else 0 */

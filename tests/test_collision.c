@@ -196,6 +196,139 @@ static void test_sat_pieces_within_the_margin_are_always_a_contact (void **state
   assert_true (overlapping > 5000 && near > 2000);
 }
 
+/* A convex polygon of n corners at random angles on a circle of radius r
+ * (counter-clockwise), its normals, vertex average and bounding radius as
+ * shape.c sets them; a sliver when `thin` squeezes it across. */
+static convex_piece make_random_piece (int n, double r, double thin, uint64_t *seed, vec2 *v, vec2 *nrm)
+{
+  convex_piece p;
+  double angle[32], t;
+  vec2 c = v2 (0, 0);
+  int i, j;
+  memset (&p, 0, sizeof p);
+  for (i = 0; i < n; ++i)
+    angle[i] = 2 * M_PI * (i + 0.9 * uniform (seed)) / n;
+  for (i = 1; i < n; ++i) /* already ascending; kept so by construction */
+    for (j = i; j > 0 && angle[j - 1] > angle[j]; --j)
+      t = angle[j], angle[j] = angle[j - 1], angle[j - 1] = t;
+  for (i = 0; i < n; ++i)
+    v[i] = v2 (r * cos (angle[i]), thin * r * sin (angle[i]));
+  for (i = 0; i < n; ++i)
+    {
+      vec2 e = v2_sub (v[(i + 1) % n], v[i]);
+      nrm[i] = v2_normalize (v2 (e.y, -e.x));
+      c = v2_add (c, v[i]);
+    }
+  p.count = n, p.vertices = v, p.normals = nrm, p.center = v2_scale (c, 1.0 / n);
+  for (i = 0; i < n; ++i)
+    if (v2_len (v2_sub (v[i], p.center)) > p.bound_radius)
+      p.bound_radius = v2_len (v2_sub (v[i], p.center));
+  return p;
+}
+
+/* The SAT test's pruned search for the most separating edge gives what
+ * searching every edge gives, to the bit: the separation, the edge (the
+ * first to reach it), and, within the margin, the outer edge and its
+ * separation. 60000 random pairs of 3- to 20-gons (regular and irregular,
+ * slivers among them; up to 16 edges pruned, more searched plainly), sizes
+ * 1e-4 to 10, far from the origin or near it, placed to overlap, touch or
+ * stand apart, and boxes aligned face to face, where edges tie exactly;
+ * margins 0, random and infinite; and a pair placed at NaN. */
+static void test_sat_pruned_search_equals_the_plain_one (void **state)
+{
+  uint64_t seed = 0x9e3779b97f4a7c15ull;
+  int trial, within = 0, ties = 0;
+  (void) state;
+  for (trial = 0; trial < 60000; ++trial)
+    {
+      vec2 va[32], na[32], vb[32], nb[32];
+      int kind = trial % 4, side;
+      int sa = 3 + (int) (uniform (&seed) * 18), sb = 3 + (int) (uniform (&seed) * 18);
+      double scale = pow (10.0, -4.0 + 5.0 * uniform (&seed));
+      double ra = scale * (0.2 + uniform (&seed)), rb = scale * (0.2 + uniform (&seed));
+      double far = trial % 3 == 0 ? 1e6 * uniform (&seed) : 0.0;
+      double dir = 2 * M_PI * uniform (&seed), dist = (ra + rb) * (1.3 * uniform (&seed));
+      double margins[3];
+      convex_piece a, b;
+      xform xa, xb;
+      int m;
+      if (kind == 0)
+        {
+          a = make_ngon_piece (sa, ra, uniform (&seed), va, na);
+          b = make_ngon_piece (sb, rb, uniform (&seed), vb, nb);
+        }
+      else if (kind == 3)
+        {
+          /* boxes of one size turned alike: equal separations along
+           * two faces (b diagonally off a) or all four (b on a) */
+          a = make_box_piece (2 * ra, 2 * ra, va, na);
+          b = make_box_piece (2 * ra, 2 * ra, vb, nb);
+          dist = 2 * ra * (0.9 + 0.1 * (int) (uniform (&seed) * 3));
+        }
+      else
+        {
+          a = make_random_piece (sa, ra, kind == 2 ? 0.05 : 1.0, &seed, va, na);
+          b = make_random_piece (sb, rb, 1.0, &seed, vb, nb);
+        }
+      if (kind == 3)
+        {
+          /* quarter turns, exactly; b beside, above or diagonally off a,
+           * or on it */
+          static const double quarter[4][2] = { { 1, 0 }, { 0, 1 }, { -1, 0 }, { 0, -1 } };
+          int turn = (int) (uniform (&seed) * 4);
+          int dx = (int) (uniform (&seed) * 3) - 1, dy = (int) (uniform (&seed) * 3) - 1;
+          xa.p = v2 (far, -far);
+          xa.q.c = quarter[turn][0], xa.q.s = quarter[turn][1];
+          xb.p = v2 (far + dx * dist, -far + dy * dist);
+          xb.q = xa.q;
+        }
+      else
+        {
+          xa = place (far + scale * uniform (&seed), -far, 2 * M_PI * uniform (&seed));
+          xb = place (xa.p.x + dist * cos (dir), xa.p.y + dist * sin (dir), 2 * M_PI * uniform (&seed));
+        }
+      if (trial == 7)
+        xb.p.x = NAN;
+      margins[0] = 0.0;
+      margins[1] = scale * uniform (&seed);
+      margins[2] = INFINITY;
+      for (side = 0; side < 2; ++side)
+        for (m = 0; m < 3; ++m)
+          {
+            const convex_piece *p = side ? &b : &a, *q = side ? &a : &b;
+            xform xp = side ? xb : xa, xq = side ? xa : xb;
+            int32_t e0, e1, o0, o1, i, count = 0;
+            double u0, u1, s0 = sat_max_separation_all (p, xp, q, xq, margins[m], &e0, &u0, &o0);
+            double s1 = sat_max_separation (p, xp, q, xq, margins[m], &e1, &u1, &o1);
+            if (s0 > margins[m] || s1 > margins[m])
+              {
+                if (!(s0 > margins[m] && s1 > margins[m]))
+                  fail_msg ("trial %d side %d: past margin %.17g: plain %.17g, pruned %.17g", trial, side,
+                            margins[m], s0, s1);
+                continue;
+              }
+            if (memcmp (&s0, &s1, sizeof s0) != 0 || e0 != e1 || memcmp (&u0, &u1, sizeof u0) != 0 || o0 != o1)
+              fail_msg ("trial %d side %d margin %.17g: plain %.17g edge %d outer %.17g %d, pruned %.17g edge %d "
+                        "outer %.17g %d",
+                        trial, side, margins[m], s0, e0, u0, o0, s1, e1, u1, o1);
+            within++;
+            /* edges that reach the largest exactly, beyond the first */
+            for (i = 0; i < p->count && m == 2; ++i)
+              {
+                vec2 n = rot2_apply (xform_relative (xq, xp).q, p->normals[i]);
+                double si = INFINITY;
+                int32_t j;
+                for (j = 0; j < q->count; ++j)
+                  si = v2_dot (n, q->vertices[j]) < si ? v2_dot (n, q->vertices[j]) : si;
+                count += si - v2_dot (n, xform_apply (xform_relative (xq, xp), p->vertices[i])) == s0;
+              }
+            ties += count > 1;
+          }
+    }
+  print_message ("within the margin %d, ties %d\n", within, ties);
+  assert_true (within > 150000 && ties > 1000);
+}
+
 /* A triangle with a corner on its own origin, pointing along (sx, sy). */
 static convex_piece make_tip_piece (double sx, double sy, vec2 *v, vec2 *n)
 {
@@ -629,6 +762,7 @@ int main (void)
     cmocka_unit_test (test_sat_separated_touching_margin),
     cmocka_unit_test (test_sat_pieces_within_the_margin_are_always_a_contact),
     cmocka_unit_test (test_sat_deep_inside_has_unit_normal),
+    cmocka_unit_test (test_sat_pruned_search_equals_the_plain_one),
     cmocka_unit_test (test_circles),
     cmocka_unit_test (test_equal_masses_head_on_swap_velocities),
     cmocka_unit_test (test_off_centre_elastic_conserves_energy_and_momentum),
