@@ -17,22 +17,6 @@ static inline double edge_separation (const convex_piece *q, vec2 n, double offs
   return s - offset;
 }
 
-/* The same, and the nearest vertex (the first if several). */
-static inline double edge_support (const convex_piece *q, vec2 n, double offset, int32_t *nearest)
-{
-  double s = INFINITY;
-  int32_t j, k = 0;
-  for (j = 0; j < q->count; ++j)
-    {
-      double d = v2_dot (n, q->vertices[j]);
-      int take = d < s;
-      s = take ? d : s;
-      k = take ? j : k;
-    }
-  *nearest = k;
-  return s - offset;
-}
-
 /* The edge of `p` (placed by xp) whose outward normal separates it most from
  * `q` (placed by xq): the candidate axes of thesis fig. 3.7. The separation
  * along an axis is the gap between p's edge and q's nearest vertex; the
@@ -77,65 +61,72 @@ double sat_max_separation_all (const convex_piece *p, xform xp, const convex_pie
  * of the coordinates: a few units in the last place would do. */
 #define SAT_PRUNE_ROUNDING 1e-9
 
+/* The lowest set bit of m (not 0). */
+static inline int32_t lowest_bit (uint32_t m)
+{
+#ifdef __GNUC__
+  return __builtin_ctz (m);
+#else
+  int32_t i = 0;
+  for (; !(m & 1u); m >>= 1)
+    ++i;
+  return i;
+#endif
+}
+
+/* Edge i of p searched as the plain search does, taken as the best if it
+ * beats it. Returns whether the best now exceeds the margin (the search
+ * stops). */
+static inline int edge_taken (const convex_piece *p, const convex_piece *q, xform rel, int32_t i, double margin,
+                              double *best, int32_t *best_edge)
+{
+  vec2 n = rot2_apply (rel.q, p->normals[i]);
+  double s = edge_separation (q, n, v2_dot (n, xform_apply (rel, p->vertices[i])));
+  int take = s > *best;
+  *best = take ? s : *best;
+  *best_edge = take ? i : *best_edge;
+  return *best > margin;
+}
+
 /* sat_max_separation_all's result, bit for bit, without the nearest-vertex
- * search for edges that cannot win. First the edge that faces q most
- * (whose line is farthest from q's vertex average, which lies within q) is
- * searched: its separation is reached by the winner, and its nearest
- * vertex v is one of q's. No vertex of q is nearer an edge than q's nearest
- * vertex is, so an edge's separation is at most its gap to the vertex
- * average and at most its gap to v: an edge with either gap below the
- * separation reached (by more than rounding) cannot win and is passed
- * over. Those gaps are taken in p's own frame, without turning each edge
- * into q's; the rest are searched in order, as the plain search takes them
- * and with its arithmetic: the same largest, the same first edge to reach
- * it, the same stop past the margin (when the first edge searched is past
- * it, the plain search too ends past it, and callers look no further). */
+ * search for edges that cannot win. q's vertices lie within its bounding
+ * radius R of its vertex average c, which lies within q: an edge's
+ * separation is at most its gap to c, and at least that gap less R. So the
+ * largest separation is at least the largest gap less R, and an edge whose
+ * gap to c is below that (by more than rounding: the gaps are taken in p's
+ * own frame, without turning each edge into q's) cannot win. The rest are
+ * searched in order, as the plain search takes them and with its
+ * arithmetic: the same largest, the same first edge to reach it, the same
+ * stop past the margin (an edge passed over may be past the margin where
+ * the plain search would stop at it, but then both end past it, and
+ * callers look no further). */
 double sat_max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double margin,
                           int32_t *edge, double *outer, int32_t *outer_edge)
 {
   xform rel;
-  vec2 c, v, n;
-  double gap[SAT_PRUNE_MAX_EDGES], reached, least, best = -INFINITY, top = -INFINITY;
-  int32_t i, k, first = 0, best_edge = 0;
+  vec2 c;
+  double gap[SAT_PRUNE_MAX_EDGES], least, best = -INFINITY, top = -INFINITY;
+  int32_t i, best_edge = 0;
+  uint32_t keep = 0;
   if (p->count > SAT_PRUNE_MAX_EDGES || p->internal != 0)
     return sat_max_separation_all (p, xp, q, xq, margin, edge, outer, outer_edge);
   rel = xform_relative (xq, xp); /* p in q's frame */
   c = xform_apply_inv (rel, q->center);
   for (i = 0; i < p->count; ++i)
     {
-      int take;
       gap[i] = v2_dot (p->normals[i], v2_sub (c, p->vertices[i]));
-      take = gap[i] > top;
-      top = take ? gap[i] : top;
-      first = take ? i : first;
+      top = gap[i] > top ? gap[i] : top;
     }
-  n = rot2_apply (rel.q, p->normals[first]);
-  reached = edge_support (q, n, v2_dot (n, xform_apply (rel, p->vertices[first])), &k);
-  if (reached > margin)
-    {
-      /* the plain search stops past the margin too */
-      *edge = *outer_edge = first;
-      *outer = reached;
-      return reached;
-    }
-  v = xform_apply_inv (rel, q->vertices[k]);
-  least = reached - SAT_PRUNE_ROUNDING * (fabs (rel.p.x) + fabs (rel.p.y) + fabs (p->center.x) + fabs (p->center.y)
-                                          + fabs (q->center.x) + fabs (q->center.y) + p->bound_radius
-                                          + q->bound_radius);
+  least = top - q->bound_radius
+          - SAT_PRUNE_ROUNDING * (fabs (rel.p.x) + fabs (rel.p.y) + fabs (p->center.x) + fabs (p->center.y)
+                                  + fabs (q->center.x) + fabs (q->center.y) + p->bound_radius + q->bound_radius);
+  /* the edges that may win, as bits, without a branch (which do is not
+   * predictable), then searched in order */
   for (i = 0; i < p->count; ++i)
-    {
-      double s;
-      int take;
-      if (i != first && (gap[i] < least || v2_dot (p->normals[i], v2_sub (v, p->vertices[i])) < least))
-        continue; /* it cannot win */
-      n = rot2_apply (rel.q, p->normals[i]);
-      s = i == first ? reached : edge_separation (q, n, v2_dot (n, xform_apply (rel, p->vertices[i])));
-      take = s > best;
-      best = take ? s : best;
-      best_edge = take ? i : best_edge;
-      if (best > margin)
-        break;
-    }
+    keep |= (uint32_t) !(gap[i] < least) << i;
+  for (; keep; keep &= keep - 1)
+    if (edge_taken (p, q, rel, lowest_bit (keep), margin, &best, &best_edge))
+      break;
   /* no internal edges: the largest over the outer ones is the largest
    * (none when no separation was a number) */
   *edge = best_edge;
