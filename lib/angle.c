@@ -61,7 +61,7 @@ rot2 rot2_from_angle (double angle)
   /* the nearest k (a tie either way: |r| <= pi/4 for both), by a
    * conversion that truncates, not a call of floor */
   x = angle * TWO_OVER_PI;
-  n = (long) (x >= 0.0 ? x + 0.5 : x - 0.5);
+  n = (long) (x + copysign (0.5, x)); /* x - 0.5 below 0: the same sum */
   k = (double) n;
   r = ((angle - k * PIO2_1) - k * PIO2_2) - k * PIO2_3;
   c = cos_reduced (r), s = sin_reduced (r);

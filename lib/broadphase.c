@@ -327,16 +327,27 @@ static int mend_kept (carom_world *world, int32_t n)
   return 1;
 }
 
-/* Report the kept pairs whose boxes meet, in the order they were kept. */
+/* Kept pairs tested at a time by report_kept. */
+#define REPORT_CHUNK 64
+
+/* Report the kept pairs whose boxes meet, in the order they were kept. The
+ * meetings of a chunk are noted without a branch (whether two fat boxes'
+ * boxes meet is not predictable), then reported. */
 static void report_kept (carom_world *world, pair_callback fn, void *user)
 {
   broadphase *bp = &world->broad;
-  int32_t i;
-  for (i = 0; i < bp->pair_count; i += 2)
+  int32_t i, k, met[REPORT_CHUNK];
+  for (i = 0; i < bp->pair_count; i += 2 * REPORT_CHUNK)
     {
-      const sweep_entry *e = &bp->entries[bp->pairs[i]], *f = &bp->entries[bp->pairs[i + 1]];
-      if (e->lo <= f->hi && f->lo <= e->hi && e->lo2 <= f->hi2 && f->lo2 <= e->hi2)
-        fn (world, e->slot, f->slot, user);
+      int32_t end = i + 2 * REPORT_CHUNK < bp->pair_count ? i + 2 * REPORT_CHUNK : bp->pair_count, hits = 0;
+      for (k = i; k < end; k += 2)
+        {
+          const sweep_entry *e = &bp->entries[bp->pairs[k]], *f = &bp->entries[bp->pairs[k + 1]];
+          met[hits] = k;
+          hits += (e->lo <= f->hi) & (f->lo <= e->hi) & (e->lo2 <= f->hi2) & (f->lo2 <= e->hi2);
+        }
+      for (k = 0; k < hits; ++k)
+        fn (world, bp->entries[bp->pairs[met[k]]].slot, bp->entries[bp->pairs[met[k] + 1]].slot, user);
     }
 }
 

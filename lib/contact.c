@@ -656,12 +656,13 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
    * collide_pieces turns what needs turning) */
   carom_shape_kind ka = world->bodies[a].shape.kind, kb = world->bodies[b].shape.kind;
   int compound = ka == CAROM_SHAPE_COMPOUND || kb == CAROM_SHAPE_COMPOUND;
-  if (compound ? a > b : (ka == CAROM_SHAPE_CIRCLE && kb == CAROM_SHAPE_POLYGON) || (ka == kb && a > b))
-    {
-      int32_t t = a;
-      a = b;
-      b = t;
-    }
+  {
+    /* by selects: which of a pair comes first is not predictable */
+    int swap = compound ? a > b : (ka == CAROM_SHAPE_CIRCLE && kb == CAROM_SHAPE_POLYGON) | (ka == kb && a > b);
+    int32_t t = select_int (swap, b, a);
+    b = select_int (swap, a, b);
+    a = t;
+  }
   A = &world->bodies[a];
   B = &world->bodies[b];
   if (!body_filters_pass (A, B) || joints_block_pair (world, a, b))

@@ -95,8 +95,8 @@ static void rescale_warm_start (contact_point *p, double old_nm, double old_tm)
   /* by selects: whether a mass fell by a rounding or rose is not
    * predictable (the quotient not taken may be inf or NaN, and is unused) */
   double sn = p->normal_mass / old_nm, st = p->tangent_mass / old_tm;
-  p->normal_impulse = p->normal_mass < old_nm ? p->normal_impulse * sn : p->normal_impulse;
-  p->tangent_impulse = p->tangent_mass < old_tm ? p->tangent_impulse * st : p->tangent_impulse;
+  p->normal_impulse = select_double (p->normal_mass < old_nm, p->normal_impulse * sn, p->normal_impulse);
+  p->tangent_impulse = select_double (p->tangent_mass < old_tm, p->tangent_impulse * st, p->tangent_impulse);
 }
 
 /* Whether a contact begins resting this step (contact_cold_start): it is

@@ -3,6 +3,8 @@
 #define CAROM_VEC2_H
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #define CAROM_PI 3.14159265358979323846
 
@@ -14,6 +16,26 @@
 #else
 #define ALWAYS_INLINE static inline
 #endif
+
+/* c ? a : b, the same bits, computed without a branch: for a choice the
+ * data make unpredictable, which compilers often turn into a jump (a
+ * mispredicted one costs as much as a dozen multiplications). */
+static inline double select_double (int c, double a, double b)
+{
+  uint64_t ua, ub, m = (uint64_t) 0 - (uint64_t) (c != 0);
+  memcpy (&ua, &a, sizeof ua);
+  memcpy (&ub, &b, sizeof ub);
+  ua = (ua & m) | (ub & ~m);
+  memcpy (&a, &ua, sizeof a);
+  return a;
+}
+
+/* The same for two slots. */
+static inline int32_t select_int (int c, int32_t a, int32_t b)
+{
+  int32_t m = -(int32_t) (c != 0);
+  return (a & m) | (b & ~m);
+}
 
 typedef struct vec2 {
   double x, y;
