@@ -70,9 +70,9 @@ rot2 rot2_from_angle (double angle)
    * is not predictable) */
   {
     int odd = (int) (n & 1), neg_c = (int) ((n + 1) & 2), neg_s = (int) (n & 2);
-    double qc = odd ? s : c, qs = odd ? c : s;
-    q.c = neg_c ? -qc : qc;
-    q.s = neg_s ? -qs : qs;
+    double qc = select_double (odd, s, c), qs = select_double (odd, c, s);
+    q.c = select_double (neg_c, -qc, qc);
+    q.s = select_double (neg_s, -qs, qs);
   }
   return q;
 }
