@@ -49,13 +49,15 @@
  * (contacts_after_impacts), each after the impacts found so far. */
 #define AFTER_IMPACT_PASSES 4
 
-/* How far two bodies' centres can close along n in the step: their
- * relative velocity's approach, and what gravity adds (at most one body's
- * fall). */
-static double closing_reach (vec2 v, vec2 n, const step_context *ctx)
+/* How far two bodies' centres can close on each other in the step, in any
+ * direction: their relative speed, and what gravity adds (at most one
+ * body's fall). Not the approach along a detected normal: where a corner
+ * meets a corner, the gap that closes first may be along another axis than
+ * the one the detection measured, and the bodies' whole relative motion
+ * can go into it. */
+static double closing_reach (vec2 v, const step_context *ctx)
 {
-  double approach = -v2_dot (v, n) * ctx->dt;
-  return (approach > 0.0 ? approach : 0.0) + 0.5 * ctx->accel * ctx->dt * ctx->dt;
+  return v2_len (v) * ctx->dt + 0.5 * ctx->accel * ctx->dt * ctx->dt;
 }
 
 /* A contact whose bodies may fly free into an impact within the step:
@@ -63,7 +65,7 @@ static double closing_reach (vec2 v, vec2 n, const step_context *ctx)
  * closing faster than resting contact ever does and meeting within the
  * step, or within the distance the bodies' turning carries them. With
  * continuous collision (the world's or a bullet's), within the distance
- * their turning and their approach along the normal carry them: a fast
+ * their turning and their relative motion carry them: a fast
  * spinning body swings in a corner that is none of the detected points,
  * and the points' own estimate (their speed at the arms of the detection)
  * misses it (the elastic gas: 5 cm deep). Its pieces are polygons' convex
@@ -90,7 +92,7 @@ static int impact_within_step (const carom_world *world, const contact *k, const
        * linear estimate does not see */
       if (swept < 0)
         swept = contact_pair_swept (world, k->a, k->b, ctx);
-      hits |= -p->depth < turn + (swept ? closing_reach (v, p->normal, ctx) : 0.0);
+      hits |= -p->depth < turn + (swept ? closing_reach (v, ctx) : 0.0);
     }
   return hits;
 }
