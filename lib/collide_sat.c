@@ -261,6 +261,34 @@ static int32_t corner_contact (const convex_piece *a, xform xa, const convex_pie
   return 1;
 }
 
+/* Overlapping pieces whose faces give no point (clipping leaves less than
+ * an edge: a corner pushed into the other piece next to its corner, the
+ * incident edge lying beside the reference face) meet at the incident
+ * piece's vertex deepest behind the reference face: one point, the
+ * reference face's normal, its depth that face's separation. Without it
+ * they would have no contact at all, and an impact's second touch a hair
+ * after the first (a corner sliding off a corner into the face beside it)
+ * would be taken up by nothing: 4.5 cm deep by the next step. */
+static int32_t deepest_vertex (const convex_piece *ref, xform xref, int32_t ref_edge, const convex_piece *inc,
+                               xform xinc, int flip, manifold *m)
+{
+  vec2 n = rot2_apply (xref.q, ref->normals[ref_edge]), v1 = xform_apply (xref, ref->vertices[ref_edge]);
+  double deepest = INFINITY;
+  int32_t i, at = 0;
+  for (i = 0; i < inc->count; ++i)
+    {
+      double sep = v2_dot (n, v2_sub (xform_apply (xinc, inc->vertices[i]), v1));
+      if (sep < deepest)
+        deepest = sep, at = i;
+    }
+  m->points[0].point = v2_mad (xform_apply (xinc, inc->vertices[at]), -0.5 * deepest, n);
+  m->points[0].normal = flip ? v2_neg (n) : n;
+  m->points[0].depth = -deepest;
+  m->points[0].feature = ((uint32_t) flip << 31) | ((uint32_t) (ref_edge & 0x7fff) << 16) | (uint32_t) at;
+  m->count = 1;
+  return 1;
+}
+
 int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin, manifold *m)
 {
   int32_t edge_a, edge_b, outer_a, outer_b, ref_edge, inc_edge = 0, i, n_inc, flip, tries;
@@ -327,7 +355,8 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
    * lies beside the reference edge meets the other piece at a corner */
   if (clip_segment (clip1, seg, v2_neg (tangent), -v2_dot (tangent, v1), 0x8000u, side_tol) < 2
       || clip_segment (clip2, clip1, tangent, v2_dot (tangent, v2_), 0x8001u, side_tol) < 2)
-    return (sep_a > 0.0 || sep_b > 0.0) ? corner_contact (a, xa, b, xb, margin, m) : 0;
+    return (sep_a > 0.0 || sep_b > 0.0) ? corner_contact (a, xa, b, xb, margin, m)
+                                        : deepest_vertex (ref, xref, ref_edge, inc, xinc, flip, m);
   for (i = 0; i < 2; ++i)
     {
       double sep = v2_dot (n_ref, v2_sub (clip2[i].v, v1));

@@ -196,6 +196,63 @@ static void test_sat_pieces_within_the_margin_are_always_a_contact (void **state
   assert_true (overlapping > 5000 && near > 2000);
 }
 
+/* Pieces that overlap corner to corner, by a hair or by a few per cent of
+ * their size: a corner of b pushed into a near one of a corner of a, b
+ * turned at random about its own corner. Clipping may leave no point there
+ * (the incident edge lies beside the reference face), and the pieces had
+ * no contact at all (an impact's second touch, a hair after the first, was
+ * then taken up by nothing: tests/test_impacts.c). 20000 random pairs of
+ * regular 3- to 8-gons, sizes 0.1 to 2.1, corners within 0 to 5% of a's
+ * size of each other, b's corner 1e-12 to 1e-2 of its size inside a along
+ * a random direction, margins up to 2% of the smaller size: every pair
+ * whose separation is at most 0 has a point, and no point is deeper than
+ * the pieces' sizes. */
+static void test_sat_corners_pushed_into_corners_are_a_contact (void **state)
+{
+  uint64_t seed = 0x636f726e657273ull;
+  int trial, overlapping = 0;
+  (void) state;
+  for (trial = 0; trial < 20000; ++trial)
+    {
+      vec2 va[8], na[8], vb[8], nb[8], axis, corner_a, corner_b, d;
+      int sa = 3 + (int) (uniform (&seed) * 6), sb = 3 + (int) (uniform (&seed) * 6), ia, ib, k;
+      double ra = 0.1 + 2.0 * uniform (&seed), rb = 0.1 + 2.0 * uniform (&seed);
+      convex_piece a = make_ngon_piece (sa, ra, uniform (&seed), va, na);
+      convex_piece b = make_ngon_piece (sb, rb, uniform (&seed), vb, nb);
+      xform xa = place (uniform (&seed), uniform (&seed), 2 * M_PI * uniform (&seed)), xb;
+      double out = 2 * M_PI * uniform (&seed), slide = 0.05 * ra * uniform (&seed);
+      double push = rb * pow (10.0, -12.0 + 10.0 * uniform (&seed)), s;
+      manifold m;
+      int n;
+      ia = (int) (uniform (&seed) * sa), ib = (int) (uniform (&seed) * sb);
+      /* a's corner, moved along a random direction by up to 5% of a */
+      corner_a = v2_mad (xform_apply (xa, a.vertices[ia]), slide, v2 (cos (out), sin (out)));
+      /* b turned so that its corner ib points back at a's centre, give or
+       * take an eighth of a turn, then placed with that corner
+       * `push` inside corner_a along the direction to a's centre */
+      d = v2_normalize (v2_sub (xa.p, corner_a));
+      xb.q = rot2_from_angle (atan2 (d.y, d.x) - atan2 (b.vertices[ib].y, b.vertices[ib].x)
+                              + 0.5 * M_PI * (uniform (&seed) - 0.5));
+      corner_b = v2_mad (corner_a, push, d);
+      xb.p = v2_sub (corner_b, rot2_apply (xb.q, b.vertices[ib]));
+      /* a margin of up to 2% of the smaller piece, as a slop (it sets how
+       * much better the other piece's face must be to be taken) */
+      n = collide_polygons_sat (&a, xa, &b, xb, 0.02 * (ra < rb ? ra : rb) * uniform (&seed), &m);
+      s = polygons_separation (&a, xa, &b, xb, &axis);
+      if (!(s <= 0.0))
+        continue;
+      overlapping++;
+      if (n == 0)
+        fail_msg ("trial %d: %d-gon r %.17g and %d-gon r %.17g overlap by %.17g corner to corner: no contact", trial,
+                  sa, ra, sb, rb, -s);
+      for (k = 0; k < n; ++k)
+        if (!(m.points[k].depth <= 2.0 * (ra + rb)))
+          fail_msg ("trial %d: a point %.17g deep", trial, m.points[k].depth);
+    }
+  print_message ("overlapping %d\n", overlapping);
+  assert_true (overlapping > 5000);
+}
+
 /* A convex polygon of n corners at random angles on a circle of radius r
  * (counter-clockwise), its normals, vertex average and bounding radius as
  * shape.c sets them; a sliver when `thin` squeezes it across. */
@@ -761,6 +818,7 @@ int main (void)
     cmocka_unit_test (test_sat_corner_a_hair_away_has_unit_normal),
     cmocka_unit_test (test_sat_separated_touching_margin),
     cmocka_unit_test (test_sat_pieces_within_the_margin_are_always_a_contact),
+    cmocka_unit_test (test_sat_corners_pushed_into_corners_are_a_contact),
     cmocka_unit_test (test_sat_deep_inside_has_unit_normal),
     cmocka_unit_test (test_sat_pruned_search_equals_the_plain_one),
     cmocka_unit_test (test_circles),
