@@ -153,6 +153,10 @@ double polygons_separation (const convex_piece *a, xform xa, const convex_piece 
  * then have no contact (test_sat_pieces_within_the_margin_are_always_a_contact). */
 #define SAT_FACE_HYSTERESIS 0.005
 
+/* Below this fraction of their coordinates' and sizes' scale, two points
+ * are too near for the direction between them to mean anything. */
+#define CORNER_NOISE 1e-9
+
 /* The feature of a corner contact (corner_contact): bits 16 to 29 all set,
  * which no reference edge's are. */
 #define CORNER_FEATURE 0x3fff0000u
@@ -239,11 +243,11 @@ static double nearest_corner (const convex_piece *a, xform xa, const convex_piec
  * closing fast on a corner would be met only once deep in it. Not for
  * pieces with seams (seams.h), which meet only on their faces. */
 static int32_t corner_contact (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin,
-                               manifold *m)
+                               vec2 axis, manifold *m)
 {
   vec2 pa = v2 (0.0, 0.0), pb = v2 (0.0, 0.0);
   uint32_t feature = 0u;
-  double d;
+  double d, scale;
   m->count = 0;
   if (a->internal || b->internal)
     return 0;
@@ -253,6 +257,21 @@ static int32_t corner_contact (const convex_piece *a, xform xa, const convex_pie
   d = hypot (pb.x - pa.x, pb.y - pa.y);
   if (!(d > 0.0) || d > margin)
     return 0;
+  /* a hair apart (a touch that the time of impact found), the direction
+   * between the two points is the rounding of their coordinates, any way
+   * round: the separating axis stands for it (an impact along the noise
+   * took a normal across the approach, found the corners leaving, and let
+   * them pass into each other) */
+  scale = fabs (pa.x) + fabs (pa.y) + a->bound_radius + b->bound_radius;
+  if (d <= CORNER_NOISE * scale)
+    {
+      m->points[0].normal = axis;
+      m->points[0].point = v2_scale (v2_add (pa, pb), 0.5);
+      m->points[0].depth = -d;
+      m->points[0].feature = feature;
+      m->count = 1;
+      return 1;
+    }
   m->points[0].normal = v2_scale (v2_sub (pb, pa), 1.0 / d);
   m->points[0].point = v2_scale (v2_add (pa, pb), 0.5);
   m->points[0].depth = -d;
@@ -261,11 +280,18 @@ static int32_t corner_contact (const convex_piece *a, xform xa, const convex_pie
   return 1;
 }
 
+/* The normal (from a to b) of the edge that separates the pieces most. */
+static vec2 separating_axis (const convex_piece *a, xform xa, int32_t edge_a, double sep_a, const convex_piece *b,
+                             xform xb, int32_t edge_b, double sep_b)
+{
+  return sep_b > sep_a ? v2_neg (rot2_apply (xb.q, b->normals[edge_b])) : rot2_apply (xa.q, a->normals[edge_a]);
+}
+
 /* Overlapping pieces whose faces give no point (clipping leaves less than
  * an edge: a corner pushed into the other piece next to its corner, the
- * incident edge lying beside the reference face) meet at the incident
- * piece's vertex deepest behind the reference face: one point, the
- * reference face's normal, its depth that face's separation. Without it
+ * incident edge lying beside the reference face) meet at the other piece's
+ * vertex deepest behind the face of least overlap: one point, that face's
+ * normal, its depth the face's overlap. Without it
  * they would have no contact at all, and an impact's second touch a hair
  * after the first (a corner sliding off a corner into the face beside it)
  * would be taken up by nothing: 4.5 cm deep by the next step. */
@@ -355,8 +381,15 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
    * lies beside the reference edge meets the other piece at a corner */
   if (clip_segment (clip1, seg, v2_neg (tangent), -v2_dot (tangent, v1), 0x8000u, side_tol) < 2
       || clip_segment (clip2, clip1, tangent, v2_dot (tangent, v2_), 0x8001u, side_tol) < 2)
-    return (sep_a > 0.0 || sep_b > 0.0) ? corner_contact (a, xa, b, xb, margin, m)
-                                        : deepest_vertex (ref, xref, ref_edge, inc, xinc, flip, m);
+    {
+      /* the face that separates them most, without the hysteresis: the
+       * one of least overlap; with seams, the face taken above (a body
+       * sliding over tiles meets their surface, not its own side) */
+      int by_b = a->internal || b->internal ? flip : outer_b >= 0 && (outer_a < 0 || face_b > face_a);
+      if (sep_a > 0.0 || sep_b > 0.0)
+        return corner_contact (a, xa, b, xb, margin, separating_axis (a, xa, edge_a, sep_a, b, xb, edge_b, sep_b), m);
+      return by_b ? deepest_vertex (b, xb, outer_b, a, xa, 1, m) : deepest_vertex (a, xa, outer_a, b, xb, 0, m);
+    }
   for (i = 0; i < 2; ++i)
     {
       double sep = v2_dot (n_ref, v2_sub (clip2[i].v, v1));
@@ -371,6 +404,6 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
       mp->feature = ((uint32_t) flip << 31) | ((uint32_t) (ref_edge & 0x7fff) << 16) | clip2[i].id;
     }
   if (m->count == 0 && (sep_a > 0.0 || sep_b > 0.0))
-    return corner_contact (a, xa, b, xb, margin, m);
+    return corner_contact (a, xa, b, xb, margin, separating_axis (a, xa, edge_a, sep_a, b, xb, edge_b, sep_b), m);
   return m->count;
 }
