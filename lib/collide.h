@@ -21,6 +21,11 @@ typedef struct manifold_point {
 typedef struct manifold {
   int32_t count;
   manifold_point points[MANIFOLD_MAX_POINTS];
+  /* never more than the pieces' distance when they are apart: the
+   * separation along the reference face's normal (the points, clipped to
+   * that face, can lie farther apart than the pieces do); INFINITY where
+   * the points' own depths tell it */
+  double gap;
 } manifold;
 
 int32_t collide_circles (vec2 ca, double ra, vec2 cb, double rb, double margin, manifold *m);

@@ -15,6 +15,7 @@ int32_t collide_circles (vec2 ca, double ra, vec2 cb, double rb, double margin, 
   vec2 d = v2_sub (cb, ca), n;
   double dist = hypot (d.x, d.y), depth; /* the squared length may underflow */
   m->count = 0;
+  m->gap = INFINITY;
   if (dist > ra + rb + margin)
     return 0;
   /* coincident centres have no direction between them: pick +x, so the
@@ -33,6 +34,7 @@ int32_t collide_polygon_circle (const convex_piece *a, xform xa, vec2 cb, double
   int32_t i, edge = -1, n = a->count;
   vec2 v1, v2_, normal, surface;
   m->count = 0;
+  m->gap = INFINITY;
   for (i = 0; i < n; ++i)
     {
       double s = v2_dot (a->normals[i], v2_sub (c, a->vertices[i]));

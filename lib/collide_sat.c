@@ -328,6 +328,7 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
   vec2 n_ref, v1, v2_, tangent;
   clip_vertex seg[2], clip1[2], clip2[2];
   m->count = 0;
+  m->gap = INFINITY;
   sep_a = sat_max_separation (a, xa, b, xb, margin, &edge_a, &face_a, &outer_a);
   if (sep_a > margin)
     return 0;
@@ -390,6 +391,7 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
         return corner_contact (a, xa, b, xb, margin, separating_axis (a, xa, edge_a, sep_a, b, xb, edge_b, sep_b), m);
       return by_b ? deepest_vertex (b, xb, outer_b, a, xa, 1, m) : deepest_vertex (a, xa, outer_a, b, xb, 0, m);
     }
+  m->gap = flip ? face_b : face_a;
   for (i = 0; i < 2; ++i)
     {
       double sep = v2_dot (n_ref, v2_sub (clip2[i].v, v1));

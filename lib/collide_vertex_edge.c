@@ -385,6 +385,7 @@ int32_t collide_polygons_vertex_edge (const vec2 *va, int32_t na, xform xa, cons
   if (!m)
     return 0;
   m->count = 0;
+  m->gap = INFINITY;
   if (!va || !vb || na < 3 || nb < 3)
     return 0;
   if (!(margin >= 0.0))

@@ -148,6 +148,7 @@ static int reuse_manifold (const contact *old, xform xa, xform xb, double tol_li
   if (!(v2_len (v2_sub (now.p, then.p)) <= tol_lin && fabs (turn.s) <= tol_ang && turn.c > 0.0))
     return 0;
   m->count = old->count;
+  m->gap = INFINITY;
   for (i = 0; i < old->count; ++i)
     {
       const contact_point *p = &old->points[i];
@@ -191,6 +192,7 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
   k->slop = pc->slop;
   k->count = m->count;
   k->fresh = old < 0;
+  k->gap = m->gap;
   k->first_point = c->point_count;
   c->point_count += m->count;
   for (i = 0; i < m->count; ++i)
@@ -201,6 +203,7 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
       p->point = m->points[i].point;
       p->normal = m->points[i].normal;
       p->depth = p->found = m->points[i].depth;
+      k->gap = -p->depth < k->gap ? -p->depth : k->gap;
       p->feature = m->points[i].feature;
       p->normal_impulse = p->tangent_impulse = 0.0;
       p->normal_mass = p->tangent_mass = 0.0;

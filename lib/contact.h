@@ -85,6 +85,9 @@ typedef struct contact {
   int32_t reimpacts;          /* times it was searched for a next touch */
   int32_t event_round;        /* the last impact (seed) that acted on it */
   int32_t touches;            /* whether its pieces touch then (contact_impacts) */
+  double gap;                 /* at detection, never more than the pieces'
+                                 distance when they are apart (manifold.gap,
+                                 and no point's separation) */
 } contact;
 
 typedef struct contacts {

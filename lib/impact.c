@@ -49,15 +49,14 @@
  * (contacts_after_impacts), each after the impacts found so far. */
 #define AFTER_IMPACT_PASSES 4
 
-/* How far two bodies' centres can close on each other in the step, in any
- * direction: their relative speed, and what gravity adds (at most one
- * body's fall). Not the approach along a detected normal: where a corner
- * meets a corner, the gap that closes first may be along another axis than
- * the one the detection measured, and the bodies' whole relative motion
- * can go into it. */
-static double closing_reach (vec2 v, const step_context *ctx)
+/* How far two bodies' centres can close along n in the step: their
+ * relative velocity's approach, and what gravity adds (at most one body's
+ * fall). Along the axis of a separating face, pieces that only translate
+ * close by this and no more; turning adds its own reach. */
+static double closing_reach (vec2 v, vec2 n, const step_context *ctx)
 {
-  return v2_len (v) * ctx->dt + 0.5 * ctx->accel * ctx->dt * ctx->dt;
+  double approach = -v2_dot (v, n) * ctx->dt;
+  return (approach > 0.0 ? approach : 0.0) + 0.5 * ctx->accel * ctx->dt * ctx->dt;
 }
 
 /* A contact whose bodies may fly free into an impact within the step:
@@ -65,7 +64,7 @@ static double closing_reach (vec2 v, const step_context *ctx)
  * closing faster than resting contact ever does and meeting within the
  * step, or within the distance the bodies' turning carries them. With
  * continuous collision (the world's or a bullet's), within the distance
- * their turning and their relative motion carry them: a fast
+ * their turning and their approach along the normal carry them: a fast
  * spinning body swings in a corner that is none of the detected points,
  * and the points' own estimate (their speed at the arms of the detection)
  * misses it (the elastic gas: 5 cm deep). Its pieces are polygons' convex
@@ -89,10 +88,11 @@ static int impact_within_step (const carom_world *world, const contact *k, const
         return 0;
       hits |= p->approach < -ctx->restitution_threshold && p->toi >= 0.0 && p->toi < ctx->dt;
       /* a fast turn can bring another corner in, which the points' own
-       * linear estimate does not see */
+       * linear estimate does not see; and the gap that closes is the
+       * pieces' (k->gap), which a point clipped to a face can overstate */
       if (swept < 0)
         swept = contact_pair_swept (world, k->a, k->b, ctx);
-      hits |= -p->depth < turn + (swept ? closing_reach (v, ctx) : 0.0);
+      hits |= k->gap < turn + (swept ? closing_reach (v, p->normal, ctx) : 0.0);
     }
   return hits;
 }
