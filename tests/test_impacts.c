@@ -1041,8 +1041,8 @@ static void test_impact_friction_is_coulombs (void **state)
  * spin, 5% with. A body an impact sets moving meets, within the step,
  * bodies its detection had no contact with (contacts_after_impacts); over
  * seven gases each, the deepest was 0.3% to 16.6% without spin and 5.6% to
- * 21.9% with it before, 0.18% and 5.1% now. Over 24 gases each, 3 without
- * spin and 5 with still go deeper than 1% (at most 3.5% and 15%): a body
+ * 21.9% with it before, 0.18% and 5.1% now. Over 24 gases each, 2 without
+ * spin and 5 with still go deeper than 1% (at most 2.3% and 15%): a body
  * an impact sets moving meets a wall it had no contact with before the
  * next impact of the step is taken (contacts_after_impacts runs once the
  * step's impacts are done), and fast-spinning corners are followed by the
