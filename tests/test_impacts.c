@@ -1153,6 +1153,56 @@ static void test_elastic_gas_with_continuous_collision_keeps_its_energy (void **
       }
 }
 
+/* A body of an elastic pair: a regular polygon of `sides` corners (0: a
+ * square of side `size`; else `size` as carom_world_add_regular takes it),
+ * its pose, velocity and spin. */
+typedef struct flying_body {
+  int sides;
+  double size, x, y, angle, vx, vy, spin;
+} flying_body;
+
+/* A world (e = 1, no friction, no gravity, continuous collision on) of the
+ * two bodies, the whole pair turned by th about the origin. */
+static carom_world *turned_pair (const flying_body *body, double th)
+{
+  double c = cos (th), s = sin (th);
+  carom_world *w = NULL;
+  carom_world_def def;
+  int i;
+  carom_world_def_init (&def, sizeof def);
+  def.restitution = 1.0;
+  def.friction = 0.0;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
+  for (i = 0; i < 2; ++i)
+    {
+      const flying_body *f = &body[i];
+      carom_body_def d;
+      carom_body_def_init (&d, sizeof d);
+      d.x = c * f->x - s * f->y, d.y = s * f->x + c * f->y, d.angle = f->angle + th;
+      d.vx = c * f->vx - s * f->vy, d.vy = s * f->vx + c * f->vy, d.spin = f->spin;
+      if (f->sides == 0)
+        assert_status (carom_world_add_box (w, &d, f->size, f->size, NULL), CAROM_OK);
+      else
+        assert_status (carom_world_add_regular (w, &d, f->sides, f->size, NULL), CAROM_OK);
+    }
+  return w;
+}
+
+/* The deepest of the world's contact points (negative when all are apart). */
+static double deepest_contact (const carom_world *w)
+{
+  double deepest = -INFINITY;
+  int32_t k;
+  for (k = 0; k < carom_world_contact_count (w); ++k)
+    {
+      double depth;
+      assert_status (carom_world_get_contact (w, k, NULL, NULL, NULL, NULL, NULL, NULL, &depth), CAROM_OK);
+      deepest = fmax (deepest, depth);
+    }
+  return deepest;
+}
+
 /* A pentagon and a triangle of such a gas, flying without spin. The
  * detection's one point, clipped to the reference face, lies 0.088 m from
  * it, while the pieces are 0.078 m apart along its normal and close 0.081
@@ -1164,46 +1214,25 @@ static void test_elastic_gas_with_continuous_collision_keeps_its_energy (void **
  * its time of impact and is reported where it touched. */
 static void test_pair_meets_by_its_gap_not_its_clipped_point (void **state)
 {
-  static const double size[2] = { 0.6192458872989095, 0.53005775762443941 };
-  static const double x[2] = { -0.3113558654585082, 0.3152642858004739 };
-  static const double y[2] = { 0.1150121692597329, -0.0760707815884987 };
-  static const double a[2] = { 2.6082170276771404, 0.38381806816973085 };
-  static const double vx[2] = { 2.474092581784209, -4.1548775502816655 };
-  static const double vy[2] = { -0.72846712063086472, -2.3663209850442746 };
+  static const flying_body pair[2] = {
+    { 5, 0.6 * 0.6192458872989095, -0.3113558654585082, 0.1150121692597329, 2.6082170276771404, 2.474092581784209,
+      -0.72846712063086472, 0.0 },
+    { 3, 0.53005775762443941, 0.3152642858004739, -0.0760707815884987, 0.38381806816973085, -4.1548775502816655,
+      -2.3663209850442746, 0.0 } };
   int turn;
   (void) state;
   for (turn = 0; turn < 64; ++turn)
     {
-      double th = 2.0 * M_PI * turn / 64.0, c = cos (th), s = sin (th);
-      carom_world *w = NULL;
-      carom_world_def def;
-      carom_body_def d;
-      int32_t i, k, impacts = 0;
-      carom_world_def_init (&def, sizeof def);
-      def.restitution = 1.0;
-      def.friction = 0.0;
-      assert_status (carom_world_init (&w, &def), CAROM_OK);
-      assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
-      for (i = 0; i < 2; ++i)
-        {
-          carom_body_def_init (&d, sizeof d);
-          d.x = c * x[i] - s * y[i], d.y = s * x[i] + c * y[i], d.angle = a[i] + th;
-          d.vx = c * vx[i] - s * vy[i], d.vy = s * vx[i] + c * vy[i];
-          assert_status (carom_world_add_regular (w, &d, i == 0 ? 5 : 3, i == 0 ? 0.6 * size[i] : size[i], NULL),
-                         CAROM_OK);
-        }
+      carom_world *w = turned_pair (pair, 2.0 * M_PI * turn / 64.0);
+      int32_t impacts;
+      double depth;
       assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
       impacts = w->contacts.impacts;
       assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
       if (impacts == 0)
         fail_msg ("turn %d: the pair did not meet in its first step", turn);
-      for (k = 0; k < carom_world_contact_count (w); ++k)
-        {
-          double depth;
-          assert_status (carom_world_get_contact (w, k, NULL, NULL, NULL, NULL, NULL, NULL, &depth), CAROM_OK);
-          if (!(depth <= 1e-9))
-            fail_msg ("turn %d: contact %d found %.3g m deep after the impact", turn, k, depth);
-        }
+      if (!((depth = deepest_contact (w)) <= 1e-9))
+        fail_msg ("turn %d: a contact found %.3g m deep after the impact", turn, depth);
       carom_world_destroy (w);
     }
 }
@@ -1221,42 +1250,21 @@ static void test_pair_meets_by_its_gap_not_its_clipped_point (void **state)
  * deeper than 1e-9 m after the step. */
 static void test_corners_meeting_bounce_off_the_separating_axis (void **state)
 {
-  static const double size[2] = { 0.77429463515976704, 0.61094233855868629 };
-  static const double x[2] = { 0.0, 1.4123669434035984 }, y[2] = { 0.0, -0.3263555765561173 };
-  static const double a[2] = { 4.9537008979097896, 3.0150051347241407 };
-  static const double vx[2] = { 0.0, -8.0602899100151362 }, vy[2] = { 0.0, 4.3055175069028904 };
+  static const flying_body pair[2] = {
+    { 6, 0.77429463515976704, 0.0, 0.0, 4.9537008979097896, 0.0, 0.0, 0.0 },
+    { 6, 0.61094233855868629, 1.4123669434035984, -0.3263555765561173, 3.0150051347241407, -8.0602899100151362,
+      4.3055175069028904, 0.0 } };
   int turn, met = 0;
   (void) state;
   for (turn = 0; turn < 64; ++turn)
     {
-      double th = 2.0 * M_PI * turn / 64.0, c = cos (th), s = sin (th);
-      carom_world *w = NULL;
-      carom_world_def def;
-      carom_body_def d;
-      int32_t i, k, impacts;
-      carom_world_def_init (&def, sizeof def);
-      def.restitution = 1.0;
-      def.friction = 0.0;
-      assert_status (carom_world_init (&w, &def), CAROM_OK);
-      assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
-      for (i = 0; i < 2; ++i)
-        {
-          carom_body_def_init (&d, sizeof d);
-          d.x = c * x[i] - s * y[i], d.y = s * x[i] + c * y[i], d.angle = a[i] + th;
-          d.vx = c * vx[i] - s * vy[i], d.vy = s * vx[i] + c * vy[i];
-          assert_status (carom_world_add_regular (w, &d, 6, size[i], NULL), CAROM_OK);
-        }
+      carom_world *w = turned_pair (pair, 2.0 * M_PI * turn / 64.0);
+      double depth;
       assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
-      impacts = w->contacts.impacts;
+      met += w->contacts.impacts > 0;
       assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
-      met += impacts > 0;
-      for (k = 0; k < carom_world_contact_count (w); ++k)
-        {
-          double depth;
-          assert_status (carom_world_get_contact (w, k, NULL, NULL, NULL, NULL, NULL, NULL, &depth), CAROM_OK);
-          if (!(depth <= 1e-9))
-            fail_msg ("turn %d: contact %d found %.3g m deep after the impacts", turn, k, depth);
-        }
+      if (!((depth = deepest_contact (w)) <= 1e-9))
+        fail_msg ("turn %d: a contact found %.3g m deep after the impacts", turn, depth);
       carom_world_destroy (w);
     }
   print_message ("%d of 64 turns met in the first step\n", met);
@@ -1341,48 +1349,24 @@ static void test_polygon_pairs_thrown_at_each_other_never_overlap (void **state)
  * orientations, for four steps: no contact deeper than 1e-9 m. */
 static void test_spinning_face_grinding_on_a_corner_never_sinks_in (void **state)
 {
-  static const double size[2] = { 0.67445460694974813, 0.90100932597382222 };
-  static const double x[2] = { -0.2573143208988258, -0.0391710984337816 };
-  static const double y[2] = { -0.471235557972582, 0.5287995262881426 };
-  static const double a[2] = { 2.3520877031353917, 2.2018696472039569 };
-  static const double vx[2] = { 1.7045593535608203, -0.5857553666113916 };
-  static const double vy[2] = { 5.5657836915742598, 0.78344017164688928 };
-  static const double w0[2] = { 17.292019448172276, 1.7925141224262668 };
+  static const flying_body pair[2] = {
+    { 5, 0.6 * 0.67445460694974813, -0.2573143208988258, -0.471235557972582, 2.3520877031353917, 1.7045593535608203,
+      5.5657836915742598, 17.292019448172276 },
+    { 0, 0.90100932597382222, -0.0391710984337816, 0.5287995262881426, 2.2018696472039569, -0.5857553666113916,
+      0.78344017164688928, 1.7925141224262668 } };
   int turn, most = 0;
   (void) state;
   for (turn = 0; turn < 64; ++turn)
     {
-      double th = 2.0 * M_PI * turn / 64.0, c = cos (th), s = sin (th);
-      carom_world *w = NULL;
-      carom_world_def def;
-      carom_body_def d;
-      int32_t i, k, step;
-      carom_world_def_init (&def, sizeof def);
-      def.restitution = 1.0;
-      def.friction = 0.0;
-      assert_status (carom_world_init (&w, &def), CAROM_OK);
-      assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
-      for (i = 0; i < 2; ++i)
-        {
-          carom_body_def_init (&d, sizeof d);
-          d.x = c * x[i] - s * y[i], d.y = s * x[i] + c * y[i], d.angle = a[i] + th;
-          d.vx = c * vx[i] - s * vy[i], d.vy = s * vx[i] + c * vy[i], d.spin = w0[i];
-          if (i == 0)
-            assert_status (carom_world_add_regular (w, &d, 5, 0.6 * size[i], NULL), CAROM_OK);
-          else
-            assert_status (carom_world_add_box (w, &d, size[i], size[i], NULL), CAROM_OK);
-        }
+      carom_world *w = turned_pair (pair, 2.0 * M_PI * turn / 64.0);
+      int step;
       for (step = 0; step < 4; ++step)
         {
+          double depth;
           assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
           most = w->contacts.impacts > most ? w->contacts.impacts : most;
-          for (k = 0; k < carom_world_contact_count (w); ++k)
-            {
-              double depth;
-              assert_status (carom_world_get_contact (w, k, NULL, NULL, NULL, NULL, NULL, NULL, &depth), CAROM_OK);
-              if (!(depth <= 1e-9))
-                fail_msg ("turn %d, step %d: contact %d found %.3g m deep", turn, step, k, depth);
-            }
+          if (!((depth = deepest_contact (w)) <= 1e-9))
+            fail_msg ("turn %d, step %d: a contact found %.3g m deep", turn, step, depth);
         }
       carom_world_destroy (w);
     }
