@@ -263,16 +263,7 @@ static int32_t corner_contact (const convex_piece *a, xform xa, const convex_pie
    * took a normal across the approach, found the corners leaving, and let
    * them pass into each other) */
   scale = fabs (pa.x) + fabs (pa.y) + a->bound_radius + b->bound_radius;
-  if (d <= CORNER_NOISE * scale)
-    {
-      m->points[0].normal = axis;
-      m->points[0].point = v2_scale (v2_add (pa, pb), 0.5);
-      m->points[0].depth = -d;
-      m->points[0].feature = feature;
-      m->count = 1;
-      return 1;
-    }
-  m->points[0].normal = v2_scale (v2_sub (pb, pa), 1.0 / d);
+  m->points[0].normal = d <= CORNER_NOISE * scale ? axis : v2_scale (v2_sub (pb, pa), 1.0 / d);
   m->points[0].point = v2_scale (v2_add (pa, pb), 0.5);
   m->points[0].depth = -d;
   m->points[0].feature = feature;
@@ -291,10 +282,9 @@ static vec2 separating_axis (const convex_piece *a, xform xa, int32_t edge_a, do
  * an edge: a corner pushed into the other piece next to its corner, the
  * incident edge lying beside the reference face) meet at the other piece's
  * vertex deepest behind the face of least overlap: one point, that face's
- * normal, its depth the face's overlap. Without it
- * they would have no contact at all, and an impact's second touch a hair
- * after the first (a corner sliding off a corner into the face beside it)
- * would be taken up by nothing: 4.5 cm deep by the next step. */
+ * normal, its depth the face's overlap. Without it they had no contact at
+ * all, however deep (2 times in 2000 steps of the bench gas, up to 2.0 mm;
+ * 11 times in the rain's, up to 4.9 mm). */
 static int32_t deepest_vertex (const convex_piece *ref, xform xref, int32_t ref_edge, const convex_piece *inc,
                                xform xinc, int flip, manifold *m)
 {
