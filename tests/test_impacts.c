@@ -1153,6 +1153,20 @@ static void test_elastic_gas_with_continuous_collision_keeps_its_energy (void **
       }
 }
 
+/* An empty world for elastic pairs: e = 1, no friction, no gravity,
+ * continuous collision on. */
+static carom_world *elastic_world (void)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_world_def_init (&def, sizeof def);
+  def.restitution = 1.0;
+  def.friction = 0.0;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
+  return w;
+}
+
 /* A body of an elastic pair: a regular polygon of `sides` corners (0: a
  * square of side `size`; else `size` as carom_world_add_regular takes it),
  * its pose, velocity and spin. */
@@ -1166,14 +1180,8 @@ typedef struct flying_body {
 static carom_world *turned_pair (const flying_body *body, double th)
 {
   double c = cos (th), s = sin (th);
-  carom_world *w = NULL;
-  carom_world_def def;
+  carom_world *w = elastic_world ();
   int i;
-  carom_world_def_init (&def, sizeof def);
-  def.restitution = 1.0;
-  def.friction = 0.0;
-  assert_status (carom_world_init (&w, &def), CAROM_OK);
-  assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
   for (i = 0; i < 2; ++i)
     {
       const flying_body *f = &body[i];
@@ -1203,6 +1211,32 @@ static double deepest_contact (const carom_world *w)
   return deepest;
 }
 
+/* The pair turned to 64 orientations, each stepped `steps` times at 1/60 s:
+ * fails when a contact is found deeper than 1e-9 m after any step. Returns
+ * how many orientations met (made an impact) in their first step; *most
+ * (when not NULL) takes the most impacts of any step. */
+static int turned_pair_never_overlaps (const flying_body *pair, int steps, int *most)
+{
+  int turn, met = 0;
+  for (turn = 0; turn < 64; ++turn)
+    {
+      carom_world *w = turned_pair (pair, 2.0 * M_PI * turn / 64.0);
+      int step;
+      for (step = 0; step < steps; ++step)
+        {
+          double depth;
+          assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
+          met += step == 0 && w->contacts.impacts > 0;
+          if (most && w->contacts.impacts > *most)
+            *most = w->contacts.impacts;
+          if (!((depth = deepest_contact (w)) <= 1e-9))
+            fail_msg ("turn %d, step %d: a contact found %.3g m deep", turn, step, depth);
+        }
+      carom_world_destroy (w);
+    }
+  return met;
+}
+
 /* A pentagon and a triangle of such a gas, flying without spin. The
  * detection's one point, clipped to the reference face, lies 0.088 m from
  * it, while the pieces are 0.078 m apart along its normal and close 0.081
@@ -1219,22 +1253,8 @@ static void test_pair_meets_by_its_gap_not_its_clipped_point (void **state)
       -0.72846712063086472, 0.0 },
     { 3, 0.53005775762443941, 0.3152642858004739, -0.0760707815884987, 0.38381806816973085, -4.1548775502816655,
       -2.3663209850442746, 0.0 } };
-  int turn;
   (void) state;
-  for (turn = 0; turn < 64; ++turn)
-    {
-      carom_world *w = turned_pair (pair, 2.0 * M_PI * turn / 64.0);
-      int32_t impacts;
-      double depth;
-      assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
-      impacts = w->contacts.impacts;
-      assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
-      if (impacts == 0)
-        fail_msg ("turn %d: the pair did not meet in its first step", turn);
-      if (!((depth = deepest_contact (w)) <= 1e-9))
-        fail_msg ("turn %d: a contact found %.3g m deep after the impact", turn, depth);
-      carom_world_destroy (w);
-    }
+  assert_int_equal (turned_pair_never_overlaps (pair, 2, NULL), 64);
 }
 
 /* Two hexagons flying without spin (one of 20000 random pairs thrown at
@@ -1254,19 +1274,9 @@ static void test_corners_meeting_bounce_off_the_separating_axis (void **state)
     { 6, 0.77429463515976704, 0.0, 0.0, 4.9537008979097896, 0.0, 0.0, 0.0 },
     { 6, 0.61094233855868629, 1.4123669434035984, -0.3263555765561173, 3.0150051347241407, -8.0602899100151362,
       4.3055175069028904, 0.0 } };
-  int turn, met = 0;
+  int met;
   (void) state;
-  for (turn = 0; turn < 64; ++turn)
-    {
-      carom_world *w = turned_pair (pair, 2.0 * M_PI * turn / 64.0);
-      double depth;
-      assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
-      met += w->contacts.impacts > 0;
-      assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
-      if (!((depth = deepest_contact (w)) <= 1e-9))
-        fail_msg ("turn %d: a contact found %.3g m deep after the impacts", turn, depth);
-      carom_world_destroy (w);
-    }
+  met = turned_pair_never_overlaps (pair, 2, NULL);
   print_message ("%d of 64 turns met in the first step\n", met);
   assert_true (met >= 32);
 }
@@ -1289,17 +1299,11 @@ static void test_polygon_pairs_thrown_at_each_other_never_overlap (void **state)
   (void) state;
   for (r = 0; r < 20000; ++r)
     {
-      carom_world *w = NULL;
-      carom_world_def def;
+      carom_world *w = elastic_world ();
       carom_body_def d;
       double size[2], dir = 2.0 * M_PI * unit_random (&seed), speed = 1.0 + 9.0 * unit_random (&seed);
       double miss = unit_random (&seed) - 0.5;
       int i, step;
-      carom_world_def_init (&def, sizeof def);
-      def.restitution = 1.0;
-      def.friction = 0.0;
-      assert_status (carom_world_init (&w, &def), CAROM_OK);
-      assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
       for (i = 0; i < 2; ++i)
         {
           int sides = 3 + (int) (4.0 * unit_random (&seed));
@@ -1318,15 +1322,9 @@ static void test_polygon_pairs_thrown_at_each_other_never_overlap (void **state)
         }
       for (step = 0; step < 6; ++step)
         {
-          int32_t c;
-          double worst = 0.0;
+          double worst;
           assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
-          for (c = 0; c < carom_world_contact_count (w); ++c)
-            {
-              double depth;
-              assert_status (carom_world_get_contact (w, c, NULL, NULL, NULL, NULL, NULL, NULL, &depth), CAROM_OK);
-              worst = fmax (worst, depth);
-            }
+          worst = deepest_contact (w);
           deepest = fmax (deepest, worst);
           if (worst > 1e-9)
             {
@@ -1354,22 +1352,9 @@ static void test_spinning_face_grinding_on_a_corner_never_sinks_in (void **state
       5.5657836915742598, 17.292019448172276 },
     { 0, 0.90100932597382222, -0.0391710984337816, 0.5287995262881426, 2.2018696472039569, -0.5857553666113916,
       0.78344017164688928, 1.7925141224262668 } };
-  int turn, most = 0;
+  int most = 0;
   (void) state;
-  for (turn = 0; turn < 64; ++turn)
-    {
-      carom_world *w = turned_pair (pair, 2.0 * M_PI * turn / 64.0);
-      int step;
-      for (step = 0; step < 4; ++step)
-        {
-          double depth;
-          assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
-          most = w->contacts.impacts > most ? w->contacts.impacts : most;
-          if (!((depth = deepest_contact (w)) <= 1e-9))
-            fail_msg ("turn %d, step %d: a contact found %.3g m deep", turn, step, depth);
-        }
-      carom_world_destroy (w);
-    }
+  turned_pair_never_overlaps (pair, 4, &most);
   print_message ("at most %d impacts in a step\n", most);
   assert_true (most > 8);
 }
