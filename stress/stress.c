@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "carom.h"
 #include "kinetic.h"
@@ -157,8 +158,106 @@ static void stack (const char *name, int n, double w, double h, double mu)
   carom_world_destroy (world);
 }
 
-int main (void)
+/* The fastest any of the n + 1 bodies `ids` moves upward (along -g). */
+static double fastest_up (const carom_world *w, const carom_body_id *ids, int n)
 {
+  double up = 0.0, vx, vy;
+  int i;
+  for (i = 0; i < n; ++i)
+    {
+      carom_body_get_velocity (w, ids[i], &vx, &vy);
+      up = vy > up ? vy : up;
+    }
+  return up;
+}
+
+/* A 1 x 1 box (e = 0, friction 0.3) dropped from h onto a column of n
+ * resting 1 x 1 boxes shifted 0.01 alternately left and right (built
+ * touching on a static ground), 4 s at the defaults, continuous collision
+ * on or off. Returns the fastest upward speed of any box over the run,
+ * over the impact speed sqrt (2 g h). */
+static double drop_on_column (int n, double h, int continuous)
+{
+  carom_world *w;
+  carom_world_def def;
+  carom_body_def d;
+  carom_body_id ids[16];
+  double worst = 0.0;
+  int i, step;
+  carom_world_def_init (&def, sizeof def);
+  def.gravity_y = -10.0;
+  def.friction = 0.3;
+  if (n > 15 || carom_world_init (&w, &def) != CAROM_OK || carom_world_set_continuous (w, continuous) != CAROM_OK)
+    exit (2);
+  carom_body_def_init (&d, sizeof d);
+  d.type = CAROM_STATIC, d.y = -1.0;
+  carom_world_add_box (w, &d, 200.0, 2.0, NULL);
+  for (i = 0; i <= n; ++i)
+    {
+      carom_body_def_init (&d, sizeof d);
+      d.x = i % 2 == 0 ? -0.01 : 0.01;
+      d.y = 0.5 + i + (i == n ? h : 0.0);
+      if (carom_world_add_box (w, &d, 1.0, 1.0, &ids[i]) != CAROM_OK)
+        exit (2);
+    }
+  for (step = 0; step < 240; ++step)
+    {
+      double up;
+      carom_world_update (w, 1.0 / 60);
+      up = fastest_up (w, ids, n + 1);
+      worst = up > worst ? up : worst;
+    }
+  carom_world_destroy (w);
+  return worst / sqrt (2.0 * 10.0 * h);
+}
+
+/* Case 17, a known failure: an inelastic box dropped on a column of boxes
+ * at rest does not throw anything up. Over columns of 1, 2, 4, 8 and 14
+ * boxes, drops of 0.5, 1 and 2 m, continuous collision on and off: no box
+ * ever rises faster than 1% of the impact speed. */
+static void drops_on_columns (void)
+{
+  static const int columns[] = { 1, 2, 4, 8, 14 };
+  static const double heights[] = { 0.5, 1.0, 2.0 };
+  double worst = 0.0, at_h = 0.0;
+  size_t i, j;
+  int continuous, at_n = 0, at_c = 0;
+  for (i = 0; i < sizeof columns / sizeof columns[0]; ++i)
+    for (j = 0; j < sizeof heights / sizeof heights[0]; ++j)
+      for (continuous = 0; continuous <= 1; ++continuous)
+        {
+          double r = drop_on_column (columns[i], heights[j], continuous);
+          if (r > worst)
+            worst = r, at_n = columns[i], at_h = heights[j], at_c = continuous;
+        }
+  report ("box dropped on a column (e = 0): fastest rise / impact speed", worst < 0.01, "%.3f (bound %.2f)", worst,
+          0.01);
+  printf ("     the worst: a column of %d, dropped %g m, continuous collision %s\n", at_n, at_h, at_c ? "on" : "off");
+}
+
+/* The cases carom is known to fail at the defaults, with their figures
+ * from `stress --all`: left out of the default run (make stress) until
+ * carom meets their bounds. */
+static const struct
+{
+  const char *name;
+  void (*run) (void);
+  const char *known;
+} known_failures[] = {
+  { "box dropped on a column", drops_on_columns,
+    "fastest rise / impact speed 0.205 (bound 0.01; a column of 2, dropped 1 m): the impulse that stopped the "
+    "impact is warm started into the next sub-step, and a pass down the column takes back only part of it" },
+};
+
+int main (int argc, char **argv)
+{
+  int all = argc > 1 && strcmp (argv[1], "--all") == 0, skipped = 0;
+  size_t k;
+  if (argc > 1 && !all)
+    {
+      fprintf (stderr, "usage: %s [--all]\n", argv[0]);
+      return 2;
+    }
   pyramid ();
   gas ();
   gas_short ();
@@ -166,6 +265,14 @@ int main (void)
   stack ("tower of 15 unit boxes, no friction", 15, 1.0, 1.0, 0.0);
   stack ("40 planks 2 x 0.5, friction 0.6", 40, 2.0, 0.5, 0.6);
   stack ("ten 1 cm boxes, friction 0.6", 10, 0.01, 0.01, 0.6);
-  printf ("stress: %d passed, %d failed\n", passed, failed);
+  for (k = 0; k < sizeof known_failures / sizeof known_failures[0]; ++k)
+    if (all)
+      known_failures[k].run ();
+    else
+      {
+        printf ("skip %s: known failure: %s\n", known_failures[k].name, known_failures[k].known);
+        skipped++;
+      }
+  printf ("stress: %d passed, %d failed, %d skipped\n", passed, failed, skipped);
   return failed ? 1 : 0;
 }
