@@ -172,7 +172,7 @@ static int settings_default (acc_settings *set)
   return 0;
 }
 
-#define N_MEASURES 15 /* the 13 measures, then the 2 reference runs */
+#define N_MEASURES 16 /* the 14 measures, then the 2 reference runs */
 
 typedef struct sweep {
   acc_settings def;
@@ -188,7 +188,7 @@ static const char *const ref_scenes[2] = { "pyramid", "rain" };
 static void run_setting (sweep *w, const acc_settings *set, acc_result *keep)
 {
   int (*const measures[]) (const acc_engine *, const acc_settings *, acc_result *) = {
-    acc_collision, acc_projectile, acc_bounce, acc_gas, acc_momentum, acc_pyramid, acc_rain, acc_tunnel,
+    acc_collision, acc_projectile, acc_bounce, acc_drop, acc_gas, acc_momentum, acc_pyramid, acc_rain, acc_tunnel,
     acc_pendulum, acc_double_pendulum, acc_chain, acc_hanging, acc_limit,
   };
   int i, n = (int) (sizeof measures / sizeof measures[0]);

@@ -87,6 +87,9 @@ int acc_momentum (const acc_engine *e, const acc_settings *set, acc_result *r);
 int acc_pyramid (const acc_engine *e, const acc_settings *set, acc_result *r);
 int acc_rain (const acc_engine *e, const acc_settings *set, acc_result *r);
 int acc_tunnel (const acc_engine *e, const acc_settings *set, acc_result *r);
+/* An inelastic box dropped on a column of boxes at rest: how fast anything
+ * rises (it should not). */
+int acc_drop (const acc_engine *e, const acc_settings *set, acc_result *r);
 /* Joints (revolute, each engine's defaults): a pendulum's period, a double
  * pendulum's energy, a heavy chain's stretch, a hanging body's reaction, a
  * limit's overshoot. */
@@ -124,6 +127,8 @@ int acc_reference (const acc_engine *e, const acc_settings *set, const char *sce
 #define ACC_CHAIN_SWING_SECONDS 8.0
 #define ACC_HANGING_SECONDS 2.0
 #define ACC_LIMIT_SECONDS 3.0
+#define ACC_DROP_SECONDS 4.0
+#define ACC_DROP_HEIGHT 1.0
 
 /* The size of a body, as above. */
 double acc_body_size (const bench_body *b);

@@ -578,6 +578,71 @@ int acc_bounce (const acc_engine *e, const acc_settings *set, acc_result *res)
   return rc;
 }
 
+/* A 1 x 1 box dropped ACC_DROP_HEIGHT (its bottom above the column's top)
+ * onto a column of n 1 x 1 boxes resting on a static ground, the boxes
+ * shifted 0.01 alternately left and right, e = 0, friction 0.3,
+ * ACC_DROP_SECONDS: the fastest any box moves upward after any step, over
+ * the impact speed sqrt (2 g h). An inelastic impact throws nothing up. */
+static int drop_rise (const acc_engine *e, const acc_settings *set, int n, double *rise, acc_result *timed)
+{
+  bench_scene s;
+  bench_body *p;
+  acc_run r;
+  const double g = 10.0;
+  int rc = -1, i, k, steps = steps_for (ACC_DROP_SECONDS, set);
+  *rise = NAN;
+  if (scene_alloc (&s, "drop", n + 2) < 0)
+    return -1;
+  s.gravity_y = -g;
+  s.restitution = 0.0;
+  s.friction = 0.3;
+  p = scene_add (&s, BENCH_BOX, 200.0, 2.0, 1);
+  p->y = -1.0;
+  for (i = 0; i <= n; ++i)
+    {
+      p = scene_add (&s, BENCH_BOX, 1.0, 1.0, 0);
+      p->x = i % 2 == 0 ? -0.01 : 0.01;
+      p->y = 0.5 + i + (i == n ? ACC_DROP_HEIGHT : 0.0);
+    }
+  if (run_begin (&r, e, set, &s) == 0)
+    {
+      double fastest = 0.0;
+      for (k = 0; k < steps; ++k)
+        {
+          if (run_step (&r) != 0)
+            break;
+          for (i = 1; i <= n + 1; ++i)
+            {
+              acc_state st;
+              e->state (r.w, i, &st);
+              fastest = st.vy > fastest ? st.vy : fastest;
+            }
+        }
+      if (k == steps)
+        {
+          *rise = fastest / sqrt (2.0 * g * ACC_DROP_HEIGHT);
+          rc = 0;
+        }
+    }
+  run_end (&r, timed ? timed : &(acc_result){ 0 });
+  bench_scene_free (&s);
+  return rc;
+}
+
+/* Columns of 2 and of 8; the cost is the 8's run. */
+int acc_drop (const acc_engine *e, const acc_settings *set, acc_result *res)
+{
+  double r2, r8;
+  int rc;
+  result_init (res, "drop");
+  rc = drop_rise (e, set, 2, &r2, NULL);
+  rc |= drop_rise (e, set, 8, &r8, res);
+  result_put (res, "rise_2", r2);
+  result_put (res, "rise_8", r8);
+  res->ok = rc == 0;
+  return rc;
+}
+
 /* ------------------------------------------------ conservation */
 
 /* The bench's gas scene (e = 1, no friction, closed walls): kinetic energy
@@ -1188,7 +1253,7 @@ int acc_reference (const acc_engine *e, const acc_settings *set, const char *sce
 int acc_run_all (const acc_engine *e, const acc_settings *set)
 {
   int (*const measures[]) (const acc_engine *, const acc_settings *, acc_result *) = {
-    acc_collision, acc_projectile, acc_bounce, acc_gas, acc_momentum, acc_pyramid, acc_rain, acc_tunnel,
+    acc_collision, acc_projectile, acc_bounce, acc_drop, acc_gas, acc_momentum, acc_pyramid, acc_rain, acc_tunnel,
     acc_pendulum, acc_double_pendulum, acc_chain, acc_hanging, acc_limit,
   };
   size_t i;

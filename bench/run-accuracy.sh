@@ -149,7 +149,7 @@ function label (row,    e, k, v) {
   return k " = " v
 }
 BEGIN {
-  ORDER = "collision projectile bounce gas momentum pyramid rain tunnel pendulum double_pendulum chain hanging limit ref_pyramid ref_rain"
+  ORDER = "collision projectile bounce drop gas momentum pyramid rain tunnel pendulum double_pendulum chain hanging limit ref_pyramid ref_rain"
   T["collision"] = "Two-body elastic collision (closed form, eq. 3.23)"
   D["collision"] = "Two equal 1 × 1 boxes head-on (they must swap velocities), and a spinning 1 × 0.6 box hitting a spinning pentagon with a corner, off-centre (e = 1, no friction, no gravity). The exact answer is computed in the bench: the time of first contact by scanning and bisection of the free flight, its point and normal, then the eq. 3.23 impulse. Error: sqrt(Σ |Δv|² + (ρ Δω)²) over the closing speed, ρ the radius of gyration, against the exact velocities and spins after the impact; energy change: kinetic energy after over before, minus 1."
   L["collision"] = "headon_err:head-on error,offcentre_err:off-centre error,energy_change:energy change (off-centre)"
@@ -159,6 +159,9 @@ BEGIN {
   T["bounce"] = "Bounce height"
   D["bounce"] = "A circle (diameter 1) and a 1 × 1 box dropped flat from 2 (bottom above the ground) with e = 0.5: the top of the first bounce against e² h0 = 0.5 (the top is taken from the last rising state as y + v²/2g, so sampling adds nothing). Signed relative error."
   L["bounce"] = "circle_height:circle height,circle_err:circle error,box_height:box height,box_err:box error"
+  T["drop"] = "Inelastic drop on a column"
+  D["drop"] = "A 1 × 1 box dropped 1 m (its bottom above the column\047s top) onto a column of 2, and of 8, 1 × 1 boxes resting on the ground, the boxes shifted 0.01 alternately left and right, e = 0, friction 0.3, 4 s: the fastest any box moved upward after any step, over the impact speed √(2gh) = 4.47 m/s. An inelastic impact throws nothing up: 0 is right (docs/stability.md, case 17). The cost is the 8\047s run."
+  L["drop"] = "rise_2:fastest rise / impact speed (2 boxes),rise_8:fastest rise / impact speed (8 boxes)"
   T["gas"] = "The elastic gas (e = 1): energy drift and overlap"
   D["gas"] = "The bench\047s gas scene (500 polygons, e = 1, no friction, no gravity, closed walls): kinetic energy after 2000/60 s over the start, minus 1 (0 is exact). Penetration, as for the pyramid: the depth of every touching contact point at the end of every step over the smaller dynamic body\047s size, the maximum and the 99th percentile."
   L["gas"] = "energy_drift:energy drift,pen_max:max penetration,pen_p99:99th pct penetration,escaped:escaped"
@@ -244,7 +247,7 @@ END {
   }
 
   # ---- the needs: one error each, for the plot and the advice
-  NN = split ("collision:offcentre_err:off-centre collision velocity error;bounce:box_err:bounce height error (box);gas:energy_drift:gas energy drift (absolute) over 2000/60 s;pyramid:top_drift:pyramid top box moved / size (10 s);rain:pen_p99:rain 99th-pct penetration / size;gas:pen_max:gas deepest penetration / size (2000/60 s);ref_pyramid:rms:pyramid RMS distance from reference / size;pendulum:period_err_90:pendulum period error at 90 degrees (absolute);double_pendulum:energy_err:double pendulum largest energy error / budget;chain:swing_gap:heavy chain swinging, joint gaps / length", NEED, ";")
+  NN = split ("collision:offcentre_err:off-centre collision velocity error;bounce:box_err:bounce height error (box);gas:energy_drift:gas energy drift (absolute) over 2000/60 s;pyramid:top_drift:pyramid top box moved / size (10 s);rain:pen_p99:rain 99th-pct penetration / size;gas:pen_max:gas deepest penetration / size (2000/60 s);ref_pyramid:rms:pyramid RMS distance from reference / size;pendulum:period_err_90:pendulum period error at 90 degrees (absolute);double_pendulum:energy_err:double pendulum largest energy error / budget;chain:swing_gap:heavy chain swinging, joint gaps / length;drop:rise_8:box dropped on a column of 8, fastest rise / impact speed", NEED, ";")
   NNAME[1] = "Collisions that spin off right (off-centre impacts)"
   NNAME[2] = "Bounces of the right height"
   NNAME[3] = "Elastic scenes that keep their energy"
@@ -255,6 +258,7 @@ END {
   NNAME[8] = "Pendulums that keep time (joints)"
   NNAME[9] = "Jointed motion that keeps its energy"
   NNAME[10] = "Joints that hold a heavy load"
+  NNAME[11] = "Inelastic impacts that throw nothing up"
   nknob = split ("substeps iterations position_correction slop manifold_tolerance narrow_phase continuous dt", KN, " ")
   for (n = 1; n <= NN; ++n) {
     split (NEED[n], f, ":"); m = f[1]; k = f[2]; title = f[3]
