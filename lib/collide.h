@@ -58,6 +58,17 @@ double sat_max_separation (const convex_piece *p, xform xp, const convex_piece *
  * clipping the incident edge against the reference edge's side planes (up to
  * two points). */
 int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin, manifold *m);
+/* The same with the reference face chosen by a direction instead of the
+ * hysteresis that keeps it from flickering between steps: of the two
+ * pieces' faces that separate them most, the one whose outward normal (a's,
+ * or b's turned round) lies nearer the unit vector `toward` (from a towards
+ * b). Where the time of impact finds two pieces touching corner to corner,
+ * both faces are at separation 0 there, and the face the pair closed on is
+ * the one that separated them just before (toi.c): the hysteresis could
+ * take the other, across which the pieces do not approach, and their
+ * impact would then take no impulse. */
+int32_t collide_polygons_sat_toward (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin,
+                                     vec2 toward, manifold *m);
 
 /* The thesis' vertex-edge method (3.2.2) on the true outlines, convex or
  * concave (counter-clockwise, body frame): vertices of one polygon inside the

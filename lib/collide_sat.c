@@ -153,6 +153,14 @@ double polygons_separation (const convex_piece *a, xform xa, const convex_piece 
  * then have no contact (test_sat_pieces_within_the_margin_are_always_a_contact). */
 #define SAT_FACE_HYSTERESIS 0.005
 
+/* collide_polygons_sat_toward takes the face whose normal lies nearer
+ * `toward` only when its cosine with it is larger by this much (the normals
+ * about 2.6 degrees apart when one is `toward` itself): nearly parallel
+ * faces (a box landing flat on another) keep the face the detections keep
+ * (the hysteresis), so the points' features match the next step's and keep
+ * their warm start. */
+#define SAT_TOWARD_TOLERANCE 1e-3
+
 /* Below this fraction of their coordinates' and sizes' scale, two points
  * are too near for the direction between them to mean anything. */
 #define CORNER_NOISE 1e-9
@@ -278,6 +286,14 @@ static vec2 separating_axis (const convex_piece *a, xform xa, int32_t edge_a, do
   return sep_b > sep_a ? v2_neg (rot2_apply (xb.q, b->normals[edge_b])) : rot2_apply (xa.q, a->normals[edge_a]);
 }
 
+/* The axis of a corner contact: `toward` when given
+ * (collide_polygons_sat_toward), else the separating axis. */
+static vec2 meeting_axis (const convex_piece *a, xform xa, int32_t edge_a, double sep_a, const convex_piece *b, xform xb,
+                          int32_t edge_b, double sep_b, const vec2 *toward)
+{
+  return toward ? *toward : separating_axis (a, xa, edge_a, sep_a, b, xb, edge_b, sep_b);
+}
+
 /* Overlapping pieces whose faces give no point (clipping leaves less than
  * an edge: a corner pushed into the other piece next to its corner, the
  * incident edge lying beside the reference face) meet at the other piece's
@@ -305,7 +321,10 @@ static int32_t deepest_vertex (const convex_piece *ref, xform xref, int32_t ref_
   return 1;
 }
 
-int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin, manifold *m)
+/* collide_polygons_sat, with the reference face chosen by `toward` when it
+ * is not NULL (collide_polygons_sat_toward). */
+static int32_t sat_collide (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin,
+                            const vec2 *toward, manifold *m)
 {
   int32_t edge_a, edge_b, outer_a, outer_b, ref_edge, inc_edge = 0, i, n_inc, flip, tries;
   const convex_piece *ref, *inc;
@@ -330,8 +349,16 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
   if (outer_a < 0 && outer_b < 0)
     return 0;
   /* prefer A's face unless B's is clearly better, so the choice does not
-   * flicker between steps for nearly equal candidates */
+   * flicker between steps for nearly equal candidates; `toward` overrules
+   * that where the other face's outward normal lies clearly nearer it */
   flip = outer_a < 0 || (outer_b >= 0 && face_b > face_a + tol);
+  if (toward && outer_a >= 0 && outer_b >= 0)
+    {
+      double along_a = v2_dot (rot2_apply (xa.q, a->normals[outer_a]), *toward);
+      double along_b = -v2_dot (rot2_apply (xb.q, b->normals[outer_b]), *toward);
+      if ((flip ? along_a - along_b : along_b - along_a) > SAT_TOWARD_TOLERANCE)
+        flip = !flip;
+    }
   for (tries = 0;; ++tries)
     {
       if (flip)
@@ -378,7 +405,8 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
        * sliding over tiles meets their surface, not its own side) */
       int by_b = a->internal || b->internal ? flip : outer_b >= 0 && (outer_a < 0 || face_b > face_a);
       if (sep_a > 0.0 || sep_b > 0.0)
-        return corner_contact (a, xa, b, xb, margin, separating_axis (a, xa, edge_a, sep_a, b, xb, edge_b, sep_b), m);
+        return corner_contact (a, xa, b, xb, margin, meeting_axis (a, xa, edge_a, sep_a, b, xb, edge_b, sep_b, toward),
+                               m);
       return by_b ? deepest_vertex (b, xb, outer_b, a, xa, 1, m) : deepest_vertex (a, xa, outer_a, b, xb, 0, m);
     }
   m->gap = flip ? face_b : face_a;
@@ -396,6 +424,17 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
       mp->feature = ((uint32_t) flip << 31) | ((uint32_t) (ref_edge & 0x7fff) << 16) | clip2[i].id;
     }
   if (m->count == 0 && (sep_a > 0.0 || sep_b > 0.0))
-    return corner_contact (a, xa, b, xb, margin, separating_axis (a, xa, edge_a, sep_a, b, xb, edge_b, sep_b), m);
+    return corner_contact (a, xa, b, xb, margin, meeting_axis (a, xa, edge_a, sep_a, b, xb, edge_b, sep_b, toward), m);
   return m->count;
+}
+
+int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin, manifold *m)
+{
+  return sat_collide (a, xa, b, xb, margin, NULL, m);
+}
+
+int32_t collide_polygons_sat_toward (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin,
+                                     vec2 toward, manifold *m)
+{
+  return sat_collide (a, xa, b, xb, margin, &toward, m);
 }

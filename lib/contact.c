@@ -261,7 +261,7 @@ static int32_t body_pieces (const body *B, const convex_piece **pieces, convex_p
  * the result turned round (the normal then turns with b's face: bit 31 of
  * the feature, see reuse_manifold). */
 static void collide_pieces (const convex_piece *p, xform xa, const convex_piece *q, xform xb, double margin,
-                            manifold *m)
+                            const vec2 *toward, manifold *m)
 {
   int32_t k;
   if (p->count == 0 && q->count == 0)
@@ -269,7 +269,12 @@ static void collide_pieces (const convex_piece *p, xform xa, const convex_piece 
   else if (q->count == 0)
     collide_polygon_circle (p, xa, xform_apply (xb, q->center), q->radius, margin, m);
   else if (p->count > 0)
-    collide_polygons_sat (p, xa, q, xb, margin, m);
+    {
+      if (toward)
+        collide_polygons_sat_toward (p, xa, q, xb, margin, *toward, m);
+      else
+        collide_polygons_sat (p, xa, q, xb, margin, m);
+    }
   else
     {
       collide_polygon_circle (q, xb, xform_apply (xa, p->center), p->radius, margin, m);
@@ -282,20 +287,24 @@ static void collide_pieces (const convex_piece *p, xform xa, const convex_piece 
 }
 
 /* The narrow phase for pieces pa, pb of bodies a, b placed at xa, xb (with a
- * compound, pieces_a and pieces_b are the two bodies' body_pieces). */
+ * compound, pieces_a and pieces_b are the two bodies' body_pieces); two
+ * convex polygons take their reference face by `toward` when it is not NULL
+ * (collide_polygons_sat_toward). */
 static void narrow_phase (const carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb,
                           const convex_piece *pieces_a, const convex_piece *pieces_b, xform xa, xform xb, double margin,
-                          manifold *m)
+                          const vec2 *toward, manifold *m)
 {
   const shape *sa = &world->bodies[a].shape, *sb = &world->bodies[b].shape;
   if (pieces_a)
-    collide_pieces (&pieces_a[pa], xa, &pieces_b[pb], xb, margin, m);
+    collide_pieces (&pieces_a[pa], xa, &pieces_b[pb], xb, margin, toward, m);
   else if (pa < 0 && pb < 0 && sa->kind == CAROM_SHAPE_CIRCLE)
     collide_circles (xa.p, sa->radius, xb.p, sb->radius, margin, m);
   else if (pb < 0 && sb->kind == CAROM_SHAPE_CIRCLE)
     collide_polygon_circle (&sa->pieces[pa], xa, xb.p, sb->radius, margin, m);
   else if (pa < 0)
     collide_polygons_vertex_edge (sa->vertices, sa->count, xa, sb->vertices, sb->count, xb, margin, m);
+  else if (toward)
+    collide_polygons_sat_toward (&sa->pieces[pa], xa, &sb->pieces[pb], xb, margin, *toward, m);
   else
     collide_polygons_sat (&sa->pieces[pa], xa, &sb->pieces[pb], xb, margin, m);
 }
@@ -358,11 +367,12 @@ static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, i
      * resting speculative point costs the solver little; a bouncy one
      * would take the time of impact's work for every corner nearby. */
     narrow_phase (world, a, b, pa, pb, pc->pieces_a, pc->pieces_b, xa, xb,
-                  old >= 0 && pc->restitution == 0.0 ? pc->margin_kept : pc->margin, m);
+                  old >= 0 && pc->restitution == 0.0 ? pc->margin_kept : pc->margin, NULL, m);
   add_manifold (world, a, b, pa, pb, m, pc, old, from, xa, xb);
 }
 
-void contact_collide_at (const carom_world *world, const contact *k, xform xa, xform xb, double margin, manifold *m)
+void contact_collide_at (const carom_world *world, const contact *k, xform xa, xform xb, double margin,
+                         const vec2 *toward, manifold *m)
 {
   const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
   convex_piece ca, cb;
@@ -372,7 +382,7 @@ void contact_collide_at (const carom_world *world, const contact *k, xform xa, x
       body_pieces (A, &P, &ca);
       body_pieces (B, &Q, &cb);
     }
-  narrow_phase (world, k->a, k->b, k->piece_a, k->piece_b, P, Q, xa, xb, margin, m);
+  narrow_phase (world, k->a, k->b, k->piece_a, k->piece_b, P, Q, xa, xb, margin, toward, m);
 }
 
 /* The first root tau >= 0 of g0 + g1 tau - curve tau^2 / 2 (g0 >= 0), in
@@ -517,7 +527,7 @@ double contact_separation_at (const carom_world *world, const contact *k, xform 
         return polygons_separation (&P[k->piece_a], xa, &Q[k->piece_b], xb, axis);
     }
   *axis = v2 (1.0, 0.0);
-  contact_collide_at (world, k, xa, xb, INFINITY, &m);
+  contact_collide_at (world, k, xa, xb, INFINITY, NULL, &m);
   for (j = 0; j < m.count; ++j)
     if (m.points[j].depth > deepest)
       {
@@ -590,7 +600,7 @@ int contact_bodies_overlap (const body *A, const body *B)
     for (j = 0; j < nb; ++j)
       {
         m.count = 0;
-        collide_pieces (&pa[i], xa, &pb[j], xb, 0.0, &m);
+        collide_pieces (&pa[i], xa, &pb[j], xb, 0.0, NULL, &m);
         for (k = 0; k < m.count; ++k)
           if (m.points[k].depth >= 0.0)
             return 1;

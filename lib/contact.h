@@ -140,9 +140,11 @@ void contacts_undo (struct carom_world *world);
 struct body;
 int contact_bodies_overlap (const struct body *a, const struct body *b);
 /* The narrow phase of contact k's two pieces with its bodies placed at xa
- * and xb instead of where they are (the time of impact, toi.c). */
+ * and xb instead of where they are (the time of impact, toi.c); two convex
+ * polygons take their reference face by `toward` (from a towards b) when it
+ * is not NULL (collide_polygons_sat_toward). */
 void contact_collide_at (const struct carom_world *world, const contact *k, xform xa, xform xb, double margin,
-                         manifold *m);
+                         const vec2 *toward, manifold *m);
 /* How far contact k's two pieces reach towards each other along the unit
  * axis n (A's along n, B's along -n, each from its body's centre), their
  * bodies turned to qa and qb and then by at most turn_a and turn_b either

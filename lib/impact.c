@@ -192,8 +192,8 @@ static void impact_guard_point (contact *k, contact_point *p, const body *ba, co
  * left as they are (an impact again, contact_impacts). Returns the slots
  * taken, a bit each. */
 static uint32_t touch_points (carom_world *world, contact *k, const body *ba, const body *bb, solver_body *a,
-                              solver_body *b, const step_context *ctx, double t, const impact_shift *shifts,
-                              int32_t first, int guard)
+                              solver_body *b, const step_context *ctx, double t, const vec2 *toward,
+                              const impact_shift *shifts, int32_t first, int guard)
 {
   const impact_shift *sa = shifts ? &shifts[k->a] : NULL, *sh = shifts ? &shifts[k->b] : NULL;
   xform xa = toi_pose (world, k->a, a, ctx, t, sa), xb = toi_pose (world, k->b, b, ctx, t, sh);
@@ -202,7 +202,7 @@ static uint32_t touch_points (carom_world *world, contact *k, const body *ba, co
   manifold m;
   uint32_t taken = 0u;
   int32_t i, j;
-  contact_collide_at (world, k, xa, xb, k->slop, &m);
+  contact_collide_at (world, k, xa, xb, k->slop, toward, &m);
   for (i = 1; i < m.count; ++i) /* deepest first */
     for (j = i; j > 0 && m.points[j].depth > m.points[j - 1].depth; --j)
       {
@@ -257,7 +257,8 @@ static void impact_inert (contact *k)
 static void impact_points (carom_world *world, contact *k, const body *ba, const body *bb, solver_body *a,
                            solver_body *b, const step_context *ctx)
 {
-  double t = toi_first_touch (world, k, a, b, ctx, 0.0, ctx->dt, NULL);
+  vec2 axis;
+  double t = toi_first_touch (world, k, a, b, ctx, 0.0, ctx->dt, NULL, &axis);
   int32_t j, first = -1;
   if (t == TOI_APART)
     {
@@ -271,7 +272,7 @@ static void impact_points (carom_world *world, contact *k, const body *ba, const
   for (j = 0; j < k->count; ++j)
     if (k->points[j].toi >= 0.0 && (first < 0 || k->points[j].toi < k->points[first].toi))
       first = j;
-  touch_points (world, k, ba, bb, a, b, ctx, t, NULL, first < 0 ? 0 : first, 1);
+  touch_points (world, k, ba, bb, a, b, ctx, t, &axis, NULL, first < 0 ? 0 : first, 1);
 }
 
 
@@ -491,6 +492,7 @@ static double impact_again (carom_world *world, contact *k, const step_context *
   const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
   solver_body *a = &world->solver_bodies[k->a], *b = &world->solver_bodies[k->b];
   double from = struck ? t + REIMPACT_DELAY * ctx->dt : t, at;
+  vec2 axis;
   uint32_t taken;
   int32_t j, first = 0;
   /* no bounce to search for, or searched enough: the sub-steps take it as
@@ -508,13 +510,13 @@ static double impact_again (carom_world *world, contact *k, const step_context *
     if (k->points[j].depth > 0.0)
       return TOI_UNKNOWN;
   k->reimpacts++;
-  at = toi_first_touch (world, k, a, b, ctx, from, ctx->dt, world->impact_shifts);
+  at = toi_first_touch (world, k, a, b, ctx, from, ctx->dt, world->impact_shifts, &axis);
   if (at < 0.0)
     return at;
   for (j = k->count - 1; j >= 0; --j)
     if (k->points[j].in_impact != IMPACT_BOUNCED && k->points[j].in_impact != IMPACT_DONE)
       first = j;
-  taken = touch_points (world, k, ba, bb, a, b, ctx, at, world->impact_shifts, first, 0);
+  taken = touch_points (world, k, ba, bb, a, b, ctx, at, &axis, world->impact_shifts, first, 0);
   if (!taken)
     return -1.0;
   for (j = 0; j < k->count; ++j)

@@ -68,28 +68,23 @@ static double separation_axis (const toi_pair *p, double t, vec2 *axis)
                                 toi_pose (p->world, p->k->b, p->b, p->ctx, t, p->shift_b), axis);
 }
 
-static double separation (const toi_pair *p, double t)
-{
-  vec2 axis;
-  return separation_axis (p, t, &axis);
-}
-
-/* The touch within [lo, hi], apart at lo (slo > tol), touching or
- * overlapping at hi (shi <= 0). */
-static double bracketed (const toi_pair *p, double lo, double slo, double hi, double shi)
+/* The touch within [lo, hi], apart at lo (slo > tol) along the axis
+ * *axis, touching or overlapping at hi (shi <= 0); *axis follows lo. */
+static double bracketed (const toi_pair *p, double lo, double slo, double hi, double shi, vec2 *axis)
 {
   int side = 0, i;
   for (i = 0; i < TOI_MAX_REFINES; ++i)
     {
       double t = lo + slo * (hi - lo) / (slo - shi), s;
+      vec2 n;
       if (!(t > lo && t < hi))
         t = 0.5 * (lo + hi);
       if (!(t > lo && t < hi))
         break; /* no double left between them */
-      s = separation (p, t);
+      s = separation_axis (p, t, &n);
       if (s > p->tol)
         {
-          lo = t, slo = s;
+          lo = t, slo = s, *axis = n;
           if (side == 1)
             shi *= 0.5;
           side = 1;
@@ -193,13 +188,13 @@ static double reach_time (const toi_pair *p, double t, vec2 n, vec2 ga, vec2 gb)
 }
 
 double toi_first_touch (const carom_world *world, const contact *k, const solver_body *a, const solver_body *b,
-                        const step_context *ctx, double t_from, double t_max, const impact_shift *shifts)
+                        const step_context *ctx, double t_from, double t_max, const impact_shift *shifts, vec2 *axis)
 {
   const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
   toi_pair p;
   vec2 ga = a->moves == MOVES_DYNAMIC ? ctx->gravity : v2 (0.0, 0.0);
   vec2 gb = b->moves == MOVES_DYNAMIC ? ctx->gravity : v2 (0.0, 0.0);
-  vec2 v = v2_sub (b->v, a->v), g = v2_sub (gb, ga), n;
+  vec2 v = v2_sub (b->v, a->v), g = v2_sub (gb, ga), n, ignored;
   double reach_a = A->shape.bound_radius, reach_b = B->shape.bound_radius;
   double turn = fabs (a->w) * reach_a + fabs (b->w) * reach_b;
   double t = t_from, s = 0.0;
@@ -212,6 +207,8 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
   p.shift_a = shifts ? &shifts[k->a] : NULL;
   p.shift_b = shifts ? &shifts[k->b] : NULL;
   p.tol = TOI_TOUCH * k->slop;
+  if (!axis)
+    axis = &ignored;
   if (!(t_max > t))
     return TOI_UNKNOWN;
   {
@@ -233,14 +230,16 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
       return TOI_APART;
     if (t_from == 0.0 && !((s = s0 = separation_axis (&p, t, &n)) > p.tol))
       return TOI_UNKNOWN;
+    *axis = n;
     if (meet > 0.0)
       {
         t += meet;
         s = separation_axis (&p, t, &n);
         if (s <= 0.0)
-          return bracketed (&p, t0, s0, t, s);
+          return bracketed (&p, t0, s0, t, s, axis);
         if (s <= p.tol)
           return t;
+        *axis = n;
       }
   }
   for (i = 0; i < advances; ++i)
@@ -251,9 +250,10 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
         return TOI_APART; /* it cannot close the gap by then */
       sn = separation_axis (&p, tn, &n);
       if (sn <= 0.0)
-        return bracketed (&p, t, s, tn, sn);
+        return bracketed (&p, t, s, tn, sn, axis);
       if (sn <= p.tol)
         return tn;
+      *axis = n;
       if (sn < s)
         {
           /* where it would touch if it kept closing as over the last
@@ -267,9 +267,9 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
           for (k = 0; k < TOI_SECANT_TRIALS; ++k, step *= 2.0)
             {
               ts = tn + step < t_max ? tn + step : t_max;
-              ss = separation (&p, ts);
+              ss = separation_axis (&p, ts, &ignored);
               if (ss <= 0.0)
-                return bracketed (&p, tn, sn, ts, ss);
+                return bracketed (&p, tn, sn, ts, ss, axis);
               if (ts == t_max)
                 break;
             }

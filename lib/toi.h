@@ -25,7 +25,11 @@ xform toi_pose (const struct carom_world *world, int32_t i, const solver_body *s
  * they stay apart until t_max; TOI_UNKNOWN when they already touch at
  * t_from, or the advancement ran out of trials. Conservative advancement
  * keeps every trial at or before the first touch; once a trial overlaps,
- * the touch is bracketed and found by regula falsi. */
+ * the touch is bracketed and found by regula falsi. With a touch, *axis
+ * (when not NULL) is the axis that separated the pieces at the last trial
+ * before it that found them clearly apart (contact_separation_at): the face
+ * they closed on, where at the touch two faces may both be at 0 (corner to
+ * corner). */
 /* Touching: a separation below this fraction of the pair's slop (near the
  * rounding of the coordinates). */
 #define TOI_TOUCH 1e-12
@@ -33,6 +37,6 @@ xform toi_pose (const struct carom_world *world, int32_t i, const solver_body *s
 #define TOI_UNKNOWN (-2.0)
 double toi_first_touch (const struct carom_world *world, const contact *k, const solver_body *a,
                         const solver_body *b, const step_context *ctx, double t_from, double t_max,
-                        const impact_shift *shifts);
+                        const impact_shift *shifts, vec2 *axis);
 
 #endif

@@ -437,6 +437,31 @@ static void test_sat_corner_a_hair_away_has_unit_normal (void **state)
     }
 }
 
+/* Two unit squares corner to corner, B's corner 1e-16 m to the right of
+ * A's and 3e-16 m above it (near the rounding of coordinates of 0.5):
+ * neither face gives a point, the corners meet (corner_contact), and the
+ * direction between them, (1, 3) / sqrt 10, is rounding, not geometry. The
+ * normal is the axis that separates the squares most, A's top face's
+ * (0, 1). Shifted along the diagonal by up to 1e6 m, where the rounding
+ * is coarser than the offset, the same. */
+static void test_sat_corners_a_rounding_apart_take_the_separating_axis (void **state)
+{
+  static const double shifts[] = { 0.0, 1.0, 1e3, 1e6 };
+  vec2 va[4], na[4], vb[4], nb[4];
+  convex_piece a = make_box_piece (1, 1, va, na), b = make_box_piece (1, 1, vb, nb);
+  size_t k;
+  (void) state;
+  for (k = 0; k < sizeof shifts / sizeof shifts[0]; ++k)
+    {
+      double s = shifts[k], dx = 1e-16 * (1.0 + s), dy = 3e-16 * (1.0 + s);
+      manifold m;
+      int n = collide_polygons_sat (&a, place (s, s, 0), &b, place (s + 1.0 + dx, s + 1.0 + dy, 0), 0.1, &m);
+      if (n != 1 || !(fabs (m.points[0].normal.x) <= 1e-12 && fabs (m.points[0].normal.y - 1.0) <= 1e-12))
+        fail_msg ("shift %g: %d points, normal (%.17g, %.17g), not (0, 1)", s, n, n ? m.points[0].normal.x : 0.0,
+                  n ? m.points[0].normal.y : 0.0);
+    }
+}
+
 /* A body deep inside another still gets a unit normal. */
 static void test_sat_deep_inside_has_unit_normal (void **state)
 {
@@ -816,6 +841,7 @@ int main (void)
     cmocka_unit_test (test_sat_face_contact_has_two_clipped_points),
     cmocka_unit_test (test_sat_rotated_corner),
     cmocka_unit_test (test_sat_corner_a_hair_away_has_unit_normal),
+    cmocka_unit_test (test_sat_corners_a_rounding_apart_take_the_separating_axis),
     cmocka_unit_test (test_sat_separated_touching_margin),
     cmocka_unit_test (test_sat_pieces_within_the_margin_are_always_a_contact),
     cmocka_unit_test (test_sat_corners_pushed_into_corners_are_a_contact),

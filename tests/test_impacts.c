@@ -1359,6 +1359,34 @@ static void test_spinning_face_grinding_on_a_corner_never_sinks_in (void **state
   assert_true (most > 8);
 }
 
+/* Three pairs of spinning pentagons and hexagons (of 100000 random pairs
+ * thrown at each other at 1 to 10 m/s, spinning at up to 30 rad/s) meet
+ * corner to corner. At the touch the time of impact finds, both pieces'
+ * faces there are at separation 0, and the hysteresis that keeps a pair's
+ * reference face from flickering between steps took A's, across which the
+ * corners do not approach (they close at 13 m/s along B's): the impact
+ * gave no impulse, and the next detection found the pair up to 5.6 cm deep.
+ * At a touch the reference face is the one that separated the pieces just
+ * before it (toi.c, collide_polygons_sat_toward). Each pair turned to 64
+ * orientations, six steps: no contact deeper than 1e-9 m. */
+static void test_corner_touches_take_the_face_they_closed_on (void **state)
+{
+  static const flying_body pairs[3][2] = {
+    { { 5, 0.86922484234202346, 0.0, 0.0, 3.5485252713992885, 0.0, 0.0, -23.02348854401837 },
+      { 5, 0.59961147650344193, -1.3063181329930389, 0.7319304413251061, 1.3765876593139255, 5.0946601563448368,
+        -4.2984408761465875, -27.780820099495884 } },
+    { { 5, 0.90340348074254284, 0.0, 0.0, 2.0449768074789731, 0.0, 0.0, -14.950287979153815 },
+      { 6, 0.69210659098647143, -0.53311209325657427, -1.5122026023577817, 4.4114150618529768, 2.4168841469934494,
+        6.3950335106681448, -19.184055372365144 } },
+    { { 6, 0.972218196970419, 0.0, 0.0, 2.8558079355719461, 0.0, 0.0, 21.934817077375808 },
+      { 5, 0.57874998225192342, 0.38616077665589871, 1.6662331473697209, 3.3568386816983438, -1.0527491036453478,
+        -9.4945340534980804, 14.610590701206839 } } };
+  int i;
+  (void) state;
+  for (i = 0; i < 3; ++i)
+    turned_pair_never_overlaps (pairs[i], 6, NULL);
+}
+
 /* A world with a static floor under gravity (e, continuous collision on)
  * and one body resting its lowest corner on it: a box 2 s x s (n = 4) or a
  * regular n-gon of circumradius s, at angle a0, spinning at `spin`, its
@@ -1629,6 +1657,7 @@ int main (void)
     cmocka_unit_test (test_corners_meeting_bounce_off_the_separating_axis),
     cmocka_unit_test (test_polygon_pairs_thrown_at_each_other_never_overlap),
     cmocka_unit_test (test_spinning_face_grinding_on_a_corner_never_sinks_in),
+    cmocka_unit_test (test_corner_touches_take_the_face_they_closed_on),
     cmocka_unit_test (test_thesis_scene_stays_within_twice_the_slop),
     cmocka_unit_test (test_fast_bodies_never_pass_a_thin_wall_at_the_defaults),
     cmocka_unit_test (test_spinning_card_never_passes_a_disc),

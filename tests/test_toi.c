@@ -130,7 +130,7 @@ static void toi_matches_dense_sampling (void **state)
               break;
             }
         }
-      t = toi_first_touch (w, &k, &a, &b, &ctx, 0.0, T_MAX, NULL);
+      t = toi_first_touch (w, &k, &a, &b, &ctx, 0.0, T_MAX, NULL, NULL);
       if (t == TOI_APART)
         {
           if (first < INFINITY)
@@ -197,7 +197,7 @@ static void toi_of_a_drop_from_rest (void **state)
         point.normal = v2 (0.0, 1.0);
         solver_copy (w, k.a, &a);
         solver_copy (w, k.b, &b);
-        t = toi_first_touch (w, &k, &a, &b, &ctx, 0.0, T_MAX, NULL);
+        t = toi_first_touch (w, &k, &a, &b, &ctx, 0.0, T_MAX, NULL, NULL);
         assert_near_rel (t, sqrt (2.0 * heights[i] / 9.81), 1e-9);
         carom_world_destroy (w);
       }
