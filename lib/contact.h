@@ -88,6 +88,8 @@ typedef struct contact {
   double gap;                 /* at detection, never more than the pieces'
                                  distance when they are apart (manifold.gap,
                                  and no point's separation) */
+  int32_t kept;               /* kept as it was before the step's impacts
+                                 changed it (impact.c, impact_keep) */
 } contact;
 
 typedef struct contacts {
@@ -114,6 +116,7 @@ typedef struct contacts {
   int32_t room_count;    /* the most contacts and points this step may */
   int32_t room_points;   /* hold: what solver_reserve kept room for */
   int32_t impacts;       /* impacts contact_impacts made this step */
+  int32_t kept, kept_points; /* contacts and points impact_keep kept */
   const int32_t *rest;   /* this step's contacts the batches leave to the
                             one-at-a-time passes (contact_batch_prepare) */
   int32_t rest_count;

@@ -143,6 +143,7 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
       k->queued = 0;
       k->impact_at = -1.0;
       k->pending = k->reimpacts = 0;
+      k->kept = 0;
       k->event_round = -1;
       k->touch_at = -1.0;
       c->bouncy_count += k->restitution > 0.0;

@@ -249,6 +249,41 @@ static void impact_inert (contact *k)
   k->block = 0;
 }
 
+/* Keep contact k and its points as they were before the impacts changed
+ * them, once (contact_impacts' replay puts them back). */
+static void impact_keep (carom_world *world, contact *k)
+{
+  contacts *c = &world->contacts;
+  int32_t i = (int32_t) (k - c->list);
+  if (k->kept || i >= c->room_count)
+    return;
+  world->saved_contacts[c->kept] = *k;
+  world->saved_contacts[c->kept].first_point = i; /* where it goes back */
+  memcpy (world->saved_points + c->kept_points, k->points, (size_t) k->count * sizeof (contact_point));
+  c->kept_points += k->count;
+  c->kept++;
+  k->kept = 1;
+}
+
+/* Put back the contacts impact_keep kept, and their points. */
+static void impact_restore (carom_world *world)
+{
+  contacts *c = &world->contacts;
+  int32_t i, p = 0;
+  for (i = 0; i < c->kept; ++i)
+    {
+      const contact *s = &world->saved_contacts[i];
+      contact *k = &c->list[s->first_point];
+      int32_t first = k->first_point;
+      contact_point *points = k->points;
+      *k = *s;
+      k->first_point = first, k->points = points, k->kept = 0;
+      memcpy (points, world->saved_points + p, (size_t) s->count * sizeof (contact_point));
+      p += s->count;
+    }
+  c->kept = c->kept_points = 0;
+}
+
 /* An impact (impact_within_step) where its pieces first touch, each body in
  * free flight until then (toi.c): touch_points, the deepest taking the place
  * of the detected point meeting first (or, when none meets by itself, the
@@ -509,6 +544,7 @@ static double impact_again (carom_world *world, contact *k, const step_context *
   for (j = 0; j < k->count && struck && t == 0.0; ++j)
     if (k->points[j].depth > 0.0)
       return TOI_UNKNOWN;
+  impact_keep (world, k);
   k->reimpacts++;
   at = toi_first_touch (world, k, a, b, ctx, from, ctx->dt, world->impact_shifts, &axis);
   if (at < 0.0)
@@ -591,7 +627,28 @@ static void seed_remove (contacts *c, int32_t *seeds, int32_t head, int32_t *n, 
   c->list[i].pending = 0;
 }
 
-void contact_impacts (carom_world *world, const step_context *ctx)
+/* Whether new contact k (contacts_after_impacts), whose search from `from`
+ * found no touch ahead, touches already at `from`: its pieces met before
+ * the last impact of one of its bodies, in a flight that impact then
+ * changed (impact_replay). */
+static int met_before (const carom_world *world, const contact *k, const step_context *ctx, double from, double at)
+{
+  const solver_body *sb = world->solver_bodies;
+  vec2 axis;
+  if (at != TOI_UNKNOWN || k->restitution == 0.0 || k->count == 0 || !(from > 0.0))
+    return 0;
+  return contact_separation_at (world, k,
+                                toi_pose (world, k->a, &sb[k->a], ctx, from, &world->impact_shifts[k->a]),
+                                toi_pose (world, k->b, &sb[k->b], ctx, from, &world->impact_shifts[k->b]), &axis)
+         <= TOI_TOUCH * k->slop;
+}
+
+/* One run of the step's impacts (contact_impacts). With `may_stop`, returns
+ * 1 as soon as a pair that the impacts brought together is found to have
+ * met before the last impact of one of its bodies (met_before): the impacts
+ * after that meeting assumed a flight that did not happen, and the run
+ * stops there. Else 0, the run complete. */
+static int impacts_run (carom_world *world, const step_context *ctx, int may_stop)
 {
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
@@ -601,8 +658,6 @@ void contact_impacts (carom_world *world, const step_context *ctx)
   int32_t i, j, n = 0, head = 0, round = 0, passes = 0;
   double fastest = 0.0, tol;
   c->impacts = 0;
-  if (c->bouncy_count == 0)
-    return;
   for (i = 0; i <= world->slot_count; ++i)
     shifts[i].p = v2 (0.0, 0.0), shifts[i].a = 0.0, shifts[i].at = 0.0;
   for (i = 0; i < c->count; ++i)
@@ -617,7 +672,7 @@ void contact_impacts (carom_world *world, const step_context *ctx)
       seed_insert (c, seeds, &head, &n, c->count, i, at);
     }
   if (n == 0)
-    return;
+    return 0;
   tol = RESTITUTION_TOLERANCE * fastest;
   solver_contact_adjacency (world, &start, &adj, NULL);
   while (head < n)
@@ -640,6 +695,7 @@ void contact_impacts (carom_world *world, const step_context *ctx)
           --queued;
           k->queued = 0;
           ++tried;
+          impact_keep (world, k);
           if (!impact_event (k, &sb[k->a], &sb[k->b], shifts, ctx, t, tol))
             continue;
           ++c->impacts;
@@ -699,7 +755,10 @@ void contact_impacts (carom_world *world, const step_context *ctx)
           if (at >= 0.0)
             seed_insert (c, seeds, &head, &n, c->count, work[i], at);
           else if (at == TOI_APART)
-            impact_inert (k);
+            {
+              impact_keep (world, k);
+              impact_inert (k);
+            }
         }
       if (head == n && passes < AFTER_IMPACT_PASSES)
         {
@@ -717,10 +776,15 @@ void contact_impacts (carom_world *world, const step_context *ctx)
                   double from = fmax (shifts[k->a].at, shifts[k->b].at), at;
                   k->queued = 0;
                   at = impact_again (world, k, ctx, from, 0);
+                  if (may_stop && met_before (world, k, ctx, from, at))
+                    return 1;
                   if (at >= 0.0)
                     seed_insert (c, seeds, &head, &n, c->count, m, at);
                   else if (at == TOI_APART)
-                    impact_inert (k);
+                    {
+                      impact_keep (world, k);
+                      impact_inert (k);
+                    }
                 }
             }
         }
@@ -738,6 +802,86 @@ void contact_impacts (carom_world *world, const step_context *ctx)
             p->approach = contact_speed (&sb[k->a], &sb[k->b], p->normal, p->rn_a, p->rn_b);
         }
     }
+  return 0;
+}
+
+/* What a replay of the step's impacts starts from: each body's velocity and
+ * spin before any impact, and each contact an impact changed as
+ * contact_prepare left it, kept when first changed (impact_keep), with its
+ * points. */
+typedef struct impact_saved {
+  vec2 v;
+  double w;
+} impact_saved;
+
+int contact_impacts_reserve (carom_world *world)
+{
+  const contacts *c = &world->contacts;
+  return mem_reserve (&world->allocator, (void **) &world->impact_saved, &world->impact_saved_cap,
+                      world->slot_count + 1, sizeof (impact_saved))
+         && mem_reserve (&world->allocator, (void **) &world->saved_contacts, &world->saved_contacts_cap,
+                         c->room_count, sizeof (contact))
+         && mem_reserve (&world->allocator, (void **) &world->saved_points, &world->saved_points_cap,
+                         c->room_points, sizeof (contact_point));
+}
+
+void contact_impacts_destroy (carom_world *world)
+{
+  mem_free (&world->allocator, world->impact_saved, (size_t) world->impact_saved_cap * sizeof (impact_saved));
+  mem_free (&world->allocator, world->saved_contacts, (size_t) world->saved_contacts_cap * sizeof (contact));
+  mem_free (&world->allocator, world->saved_points, (size_t) world->saved_points_cap * sizeof (contact_point));
+  world->impact_saved = NULL;
+  world->saved_contacts = NULL;
+  world->saved_points = NULL;
+  world->impact_saved_cap = world->saved_contacts_cap = world->saved_points_cap = 0;
+}
+
+/* The impacts of the step run once more when the first run found a pair it
+ * brought together meeting before the last impact of one of its bodies
+ * (impacts_run): from the state before any impact, with that pair's
+ * contact now among the step's from the start, so its meeting comes in its
+ * turn. At most this many runs again. */
+#define IMPACT_REPLAYS 1
+
+void contact_impacts (carom_world *world, const step_context *ctx)
+{
+  contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  impact_saved *saved = world->impact_saved;
+  int32_t count = c->count, points = c->point_count, fine = c->fine_count, cold = c->cold_count;
+  int32_t bouncy = c->bouncy_count, i, replays;
+  c->impacts = 0;
+  if (c->bouncy_count == 0)
+    return;
+  /* (the room for it was kept with the room for contacts after impacts,
+   * which bouncy contacts always have: solver_reserve) */
+  for (i = 0; i <= world->slot_count; ++i)
+    saved[i].v = sb[i].v, saved[i].w = sb[i].w;
+  c->kept = c->kept_points = 0;
+  for (replays = 0; impacts_run (world, ctx, replays < IMPACT_REPLAYS); ++replays)
+    {
+      int32_t first = count;
+      /* back to before the impacts: the bodies' velocities, the contacts
+       * they changed, and every contact's place in the impacts' order; the
+       * contacts found after the impacts stay, set up again for the
+       * velocities before them */
+      for (i = 0; i <= world->slot_count; ++i)
+        sb[i].v = saved[i].v, sb[i].w = saved[i].w;
+      impact_restore (world);
+      for (i = 0; i < count; ++i)
+        {
+          contact *k = &c->list[i];
+          k->impact_at = k->touch_at = -1.0;
+          k->pending = k->queued = k->reimpacts = 0;
+          k->event_round = -1;
+        }
+      c->fine_count = fine, c->cold_count = cold, c->bouncy_count = bouncy;
+      world->level_count = -1;
+      contact_prepare_from (world, ctx, first);
+      count = c->count, points = c->point_count;
+      fine = c->fine_count, cold = c->cold_count, bouncy = c->bouncy_count;
+    }
+  (void) points;
 }
 
 /* Whether a point takes part in restitution: some impulse of the step acted

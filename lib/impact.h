@@ -25,6 +25,10 @@ void contact_impact_points (struct carom_world *world, contact *k, solver_body *
  * bodies it touches as pairwise impacts (the sequential model,
  * docs/physics.md). */
 void contact_impacts (struct carom_world *world, const step_context *ctx);
+/* Room for what contact_impacts may replay its impacts from (0 when memory
+ * ran out; solver_reserve), and its release. */
+int contact_impacts_reserve (struct carom_world *world);
+void contact_impacts_destroy (struct carom_world *world);
 /* After the sub-steps: points that were struck leave at e times the speed
  * they met with (eq. 3.18). */
 void contact_restitution (struct carom_world *world, const step_context *ctx);

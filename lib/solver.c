@@ -160,7 +160,8 @@ int solver_reserve (carom_world *world)
          && mem_reserve (&world->allocator, (void **) &world->impact_shifts, &world->impact_shift_cap,
                          world->slot_count + 1, sizeof (impact_shift))
          && mem_reserve (&world->allocator, (void **) &world->impact_events, &world->impact_events_cap,
-                         count, sizeof (int32_t));
+                         count, sizeof (int32_t))
+         && (room == 0 || contact_impacts_reserve (world));
 }
 
 void solver_destroy (carom_world *world)
@@ -173,6 +174,7 @@ void solver_destroy (carom_world *world)
   mem_free (&world->allocator, world->restitution_list, (size_t) world->restitution_cap * sizeof (int32_t));
   mem_free (&world->allocator, world->impact_shifts, (size_t) world->impact_shift_cap * sizeof (impact_shift));
   mem_free (&world->allocator, world->impact_events, (size_t) world->impact_events_cap * sizeof (int32_t));
+  contact_impacts_destroy (world);
   world->impact_shifts = NULL;
   world->impact_events = NULL;
   world->impact_shift_cap = world->impact_events_cap = 0;

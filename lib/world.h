@@ -48,6 +48,13 @@ struct carom_world {
   int32_t impact_shift_cap;
   int32_t *impact_events;
   int32_t impact_events_cap;
+  struct impact_saved *impact_saved; /* what contact_impacts replays from:
+                                        per slot, and the contacts */
+  int32_t impact_saved_cap;
+  struct contact *saved_contacts;
+  int32_t saved_contacts_cap;
+  struct contact_point *saved_points;
+  int32_t saved_points_cap;
   struct contact_batch *batches;     /* the coloured contacts, four a batch (contact_batch.c) */
   int32_t batch_count, batch_cap;
   uint32_t *colour_used;             /* per slot: the colours its constraints took */
