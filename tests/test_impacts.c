@@ -1176,25 +1176,27 @@ typedef struct flying_body {
   double size, x, y, angle, vx, vy, spin;
 } flying_body;
 
+/* Add body f to w, turned by th about the origin (its velocity with it). */
+static void add_turned (carom_world *w, const flying_body *f, double th)
+{
+  double c = cos (th), s = sin (th);
+  carom_body_def d;
+  carom_body_def_init (&d, sizeof d);
+  d.x = c * f->x - s * f->y, d.y = s * f->x + c * f->y, d.angle = f->angle + th;
+  d.vx = c * f->vx - s * f->vy, d.vy = s * f->vx + c * f->vy, d.spin = f->spin;
+  if (f->sides == 0)
+    assert_status (carom_world_add_box (w, &d, f->size, f->size, NULL), CAROM_OK);
+  else
+    assert_status (carom_world_add_regular (w, &d, f->sides, f->size, NULL), CAROM_OK);
+}
+
 /* A world (e = 1, no friction, no gravity, continuous collision on) of the
  * two bodies, the whole pair turned by th about the origin. */
 static carom_world *turned_pair (const flying_body *body, double th)
 {
-  double c = cos (th), s = sin (th);
   carom_world *w = elastic_world ();
-  int i;
-  for (i = 0; i < 2; ++i)
-    {
-      const flying_body *f = &body[i];
-      carom_body_def d;
-      carom_body_def_init (&d, sizeof d);
-      d.x = c * f->x - s * f->y, d.y = s * f->x + c * f->y, d.angle = f->angle + th;
-      d.vx = c * f->vx - s * f->vy, d.vy = s * f->vx + c * f->vy, d.spin = f->spin;
-      if (f->sides == 0)
-        assert_status (carom_world_add_box (w, &d, f->size, f->size, NULL), CAROM_OK);
-      else
-        assert_status (carom_world_add_regular (w, &d, f->sides, f->size, NULL), CAROM_OK);
-    }
+  add_turned (w, &body[0], th);
+  add_turned (w, &body[1], th);
   return w;
 }
 
@@ -1430,17 +1432,7 @@ static void test_pairs_met_before_a_later_impact_take_their_turn (void **state)
         add_box (w, CAROM_STATIC, c * wall_x[i] - s * wall_y[i], s * wall_x[i] + c * wall_y[i], th, wall_w[i],
                  wall_h[i]);
       for (i = 0; i < 8; ++i)
-        {
-          const flying_body *f = &cluster[i];
-          carom_body_def d;
-          carom_body_def_init (&d, sizeof d);
-          d.x = c * f->x - s * f->y, d.y = s * f->x + c * f->y, d.angle = f->angle + th;
-          d.vx = c * f->vx - s * f->vy, d.vy = s * f->vx + c * f->vy, d.spin = f->spin;
-          if (f->sides == 0)
-            assert_status (carom_world_add_box (w, &d, f->size, f->size, NULL), CAROM_OK);
-          else
-            assert_status (carom_world_add_regular (w, &d, f->sides, f->size, NULL), CAROM_OK);
-        }
+        add_turned (w, &cluster[i], th);
       for (step = 0; step < 2; ++step)
         {
           double depth;
