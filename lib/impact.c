@@ -255,7 +255,7 @@ static void impact_keep (carom_world *world, contact *k)
 {
   contacts *c = &world->contacts;
   int32_t i = (int32_t) (k - c->list);
-  if (k->kept || i >= c->room_count)
+  if (k->kept)
     return;
   world->saved_contacts[c->kept] = *k;
   world->saved_contacts[c->kept].first_point = i; /* where it goes back */
@@ -630,7 +630,7 @@ static void seed_remove (contacts *c, int32_t *seeds, int32_t head, int32_t *n, 
 /* Whether new contact k (contacts_after_impacts), whose search from `from`
  * found no touch ahead, touches already at `from`: its pieces met before
  * the last impact of one of its bodies, in a flight that impact then
- * changed (impact_replay). */
+ * changed (contact_impacts then runs the step's impacts again). */
 static int met_before (const carom_world *world, const contact *k, const step_context *ctx, double from, double at)
 {
   const solver_body *sb = world->solver_bodies;
@@ -848,7 +848,7 @@ void contact_impacts (carom_world *world, const step_context *ctx)
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
   impact_saved *saved = world->impact_saved;
-  int32_t count = c->count, points = c->point_count, fine = c->fine_count, cold = c->cold_count;
+  int32_t count = c->count, fine = c->fine_count, cold = c->cold_count;
   int32_t bouncy = c->bouncy_count, i, replays;
   c->impacts = 0;
   if (c->bouncy_count == 0)
@@ -878,10 +878,9 @@ void contact_impacts (carom_world *world, const step_context *ctx)
       c->fine_count = fine, c->cold_count = cold, c->bouncy_count = bouncy;
       world->level_count = -1;
       contact_prepare_from (world, ctx, first);
-      count = c->count, points = c->point_count;
+      count = c->count;
       fine = c->fine_count, cold = c->cold_count, bouncy = c->bouncy_count;
     }
-  (void) points;
 }
 
 /* Whether a point takes part in restitution: some impulse of the step acted
