@@ -66,9 +66,10 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
  * both faces are at separation 0 there, and the face the pair closed on is
  * the one that separated them just before (toi.c): the hysteresis could
  * take the other, across which the pieces do not approach, and their
- * impact would then take no impulse. */
+ * impact would then take no impulse. With `toward` NULL, exactly
+ * collide_polygons_sat. */
 int32_t collide_polygons_sat_toward (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin,
-                                     vec2 toward, manifold *m);
+                                     const vec2 *toward, manifold *m);
 
 /* The thesis' vertex-edge method (3.2.2) on the true outlines, convex or
  * concave (counter-clockwise, body frame): vertices of one polygon inside the

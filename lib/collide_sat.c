@@ -434,7 +434,7 @@ int32_t collide_polygons_sat (const convex_piece *a, xform xa, const convex_piec
 }
 
 int32_t collide_polygons_sat_toward (const convex_piece *a, xform xa, const convex_piece *b, xform xb, double margin,
-                                     vec2 toward, manifold *m)
+                                     const vec2 *toward, manifold *m)
 {
-  return sat_collide (a, xa, b, xb, margin, &toward, m);
+  return sat_collide (a, xa, b, xb, margin, toward, m);
 }

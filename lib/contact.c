@@ -269,12 +269,7 @@ static void collide_pieces (const convex_piece *p, xform xa, const convex_piece 
   else if (q->count == 0)
     collide_polygon_circle (p, xa, xform_apply (xb, q->center), q->radius, margin, m);
   else if (p->count > 0)
-    {
-      if (toward)
-        collide_polygons_sat_toward (p, xa, q, xb, margin, *toward, m);
-      else
-        collide_polygons_sat (p, xa, q, xb, margin, m);
-    }
+    collide_polygons_sat_toward (p, xa, q, xb, margin, toward, m);
   else
     {
       collide_polygon_circle (q, xb, xform_apply (xa, p->center), p->radius, margin, m);
@@ -303,10 +298,8 @@ static void narrow_phase (const carom_world *world, int32_t a, int32_t b, int32_
     collide_polygon_circle (&sa->pieces[pa], xa, xb.p, sb->radius, margin, m);
   else if (pa < 0)
     collide_polygons_vertex_edge (sa->vertices, sa->count, xa, sb->vertices, sb->count, xb, margin, m);
-  else if (toward)
-    collide_polygons_sat_toward (&sa->pieces[pa], xa, &sb->pieces[pb], xb, margin, *toward, m);
   else
-    collide_polygons_sat (&sa->pieces[pa], xa, &sb->pieces[pb], xb, margin, m);
+    collide_polygons_sat_toward (&sa->pieces[pa], xa, &sb->pieces[pb], xb, margin, toward, m);
 }
 
 /* The largest of a cos(d) + b sin(d) over |d| <= turn (turn <= pi/2),
