@@ -788,7 +788,7 @@ static const struct
   { "Friction Ramp", friction_ramp, NULL },
   { "Overlap Recovery", overlap_recovery, NULL },
   { "Vertical Stack", vertical_stack, NULL },
-  { "Pyramid", pyramid, "top box's largest motion / side 4.48e+00 (bound 1e-02)" },
+  { "Pyramid", pyramid, "top box's largest motion / side 5.73e+00 (bound 1e-02)" },
   { "Rush", rush, NULL },
   { "Arch", arch, "top box's largest motion / height 8.81e-02 (bound 1e-02)" },
   { "Double Domino", double_domino, NULL },
