@@ -252,9 +252,16 @@ static void test_reaction_from_a_body_on_a_contact (void **state)
 
 /* A chain of 40 links (0.25 x 0.05 boxes on revolute joints) hung from the
  * world, holding a box of 100 links' mass: its joints' gaps add up to less
- * than 0.5% of its length at rest, and less than 2% while it swings down
- * from horizontal and on (8 s, through the moment it snaps taut again). */
-static double chain_stretch (int horizontal, double seconds)
+ * than 0.5% of its length at rest, and less than 1% while it swings down
+ * from horizontal and on (8 s, through the moments it snaps taut again,
+ * its links whipping round), from each of several starts: horizontal, or
+ * turned up by a millionth of a radian at a time. Where it snaps is chaotic,
+ * so one start says little: with two Newton passes a sub-step, always,
+ * the swing stretched it 0.5% from the first start, 2.7% from the third and
+ * up to 14% from others (stress case 18). */
+#define CHAIN_STARTS 8
+
+static double chain_stretch (int horizontal, double seconds, double tilt)
 {
   enum { LINKS = 40 };
   const double link = 0.25, side = 0.5;
@@ -271,9 +278,9 @@ static double chain_stretch (int horizontal, double seconds)
   for (i = 0; i <= LINKS; ++i)
     {
       double along = i < LINKS ? (i + 0.5) * link : LINKS * link + side / 2.0;
-      d.x = horizontal ? along : 0.0;
-      d.y = horizontal ? 0.0 : -along;
-      d.angle = horizontal || i == LINKS ? 0.0 : M_PI / 2.0;
+      d.x = horizontal ? along * cos (tilt) : 0.0;
+      d.y = horizontal ? along * sin (tilt) : -along;
+      d.angle = horizontal ? tilt : i == LINKS ? 0.0 : M_PI / 2.0;
       if (i < LINKS)
         assert_status (carom_world_add_box (w, &d, link, 0.05, &id), CAROM_OK);
       else
@@ -283,8 +290,8 @@ static double chain_stretch (int horizontal, double seconds)
           assert_status (carom_world_add_box (w, &d, side, side, &id), CAROM_OK);
         }
       jd.a = prev, jd.b = id;
-      jd.x = horizontal ? i * link : 0.0;
-      jd.y = horizontal ? 0.0 : -i * link;
+      jd.x = horizontal ? i * link * cos (tilt) : 0.0;
+      jd.y = horizontal ? i * link * sin (tilt) : -i * link;
       assert_status (carom_world_add_joint (w, &jd, &joints[i]), CAROM_OK);
       prev = id;
     }
@@ -307,13 +314,19 @@ static double chain_stretch (int horizontal, double seconds)
 
 static void test_heavy_chain_does_not_stretch (void **state)
 {
-  double rest, swing;
+  double rest, swing = 0.0;
+  int k;
   (void) state;
-  rest = chain_stretch (0, 5.0);
-  swing = chain_stretch (1, 8.0);
-  print_message ("chain of 40 holding 100 links' mass: stretch %.2e at rest, %.2e swinging\n", rest, swing);
+  rest = chain_stretch (0, 5.0, 0.0);
+  for (k = 0; k < CHAIN_STARTS; ++k)
+    {
+      double s = chain_stretch (1, 8.0, k * 1e-6);
+      swing = s > swing ? s : swing;
+    }
+  print_message ("chain of 40 holding 100 links' mass: stretch %.2e at rest, %.2e swinging (most of %d starts)\n", rest,
+                 swing, CHAIN_STARTS);
   assert_true (rest < 5e-3);
-  assert_true (swing < 2e-2);
+  assert_true (swing < 1e-2);
 }
 
 /* -------------------------------------------------------- limits, motors */
