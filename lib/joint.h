@@ -82,6 +82,9 @@ typedef struct joint_tree {
   int32_t factored;      /* the nodes hold the factors of the rows in the
                             joints' ja, jb (the bodies have not moved
                             since, or by little) */
+  int32_t converged;     /* the last projection ended within its tolerance
+                            (joint_tree_project): the bodies moved by no more
+                            than its last Newton pass since the factors */
   int32_t *scratch;      /* the set-up's union-find, adjacency and queue;
                             sleep.c's groups */
   int32_t scratch_cap;
@@ -146,7 +149,9 @@ void joint_tree_build (struct carom_world *world);
 /* A pass: the impulses that zero every tree row's velocity error (with
  * the rows factored last, or where the bodies are if none are). */
 void joint_tree_solve (struct carom_world *world);
-/* The bodies are about to move: the next pass factors afresh. */
+/* A sub-step begins: its first pass factors afresh, unless the last
+ * sub-step's projection converged (its factors then hold the rows where
+ * the bodies are, but for its last Newton pass's correction). */
 void joint_tree_stale (struct carom_world *world);
 /* After a sub-step's move: the displacements that remove every tree row's
  * position error (to first order), leaving the velocities alone (as the

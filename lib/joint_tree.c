@@ -88,7 +88,7 @@ void joint_tree_build (carom_world *world)
   int32_t *queue = body_node + s; /* s + joints */
   t->node_count = 0;
   t->mixed = 0;
-  t->factored = 0;
+  t->factored = t->converged = 0;
   for (i = 0; i < s; ++i)
     uf[i] = i, pendant[i] = 0, start[i] = 0, body_node[i] = -1;
   start[s] = 0;
@@ -736,12 +736,18 @@ static int projected (carom_world *world)
  * pass in a swinging chain, several where a chain snaps taut. Two, always,
  * let the heavy chain of tests/test_joints.c stretch up to 14% of its
  * length at the snap (2.3% on average over 256 starts a millionth of a
- * radian apart); passes until within the tolerance, 0.33% at most (stress
- * case 18), for 16% fewer instructions in the benchmarks' chains. The relax
- * pass reuses the last factors: the last Newton pass moves the bodies by
- * far less than the step did (but a sub-step's solve that reused them too
- * would let a chain that snaps taut stretch: each sub-step factors
- * afresh). */
+ * radian apart); passes until within the tolerance, 0.33% at most, for 16%
+ * fewer instructions in the benchmarks' chains. The relax
+ * pass, and once the passes converged the next sub-step's solve pass too,
+ * reuse the last factors: Newton's passes converge quadratically, so the
+ * last one, which left every row within the tolerance, corrected at most
+ * about its square root (1e-5 of a size, 1e-6 m on average in the
+ * benchmarks' chains), far less than the sub-step moved the bodies. A
+ * solve pass that reused the factors of before the move, as a chain snaps
+ * taut, let it stretch; after a projection that did not converge (eight
+ * passes) the next sub-step factors afresh. Reused so, the heavy chain's
+ * 256 starts stretch 0.18% at most (0.33% factoring every sub-step), and the
+ * benchmarks' chains take 9% fewer instructions again. */
 void joint_tree_project (carom_world *world, const step_context *ctx)
 {
   joint_tree *t = &world->joint_tree;
@@ -751,7 +757,8 @@ void joint_tree_project (carom_world *world, const step_context *ctx)
   if (!t->factored)
     refactor (world);
   project (world, ctx);
-  for (pass = 0; pass < JOINT_NEWTON_PASSES && !(pass > 0 && projected (world)); ++pass)
+  t->converged = 0;
+  for (pass = 0; pass < JOINT_NEWTON_PASSES && !(t->converged = pass > 0 && projected (world)); ++pass)
     {
       refactor (world);
       project (world, ctx);
@@ -760,5 +767,8 @@ void joint_tree_project (carom_world *world, const step_context *ctx)
 
 void joint_tree_stale (carom_world *world)
 {
-  world->joint_tree.factored = 0;
+  joint_tree *t = &world->joint_tree;
+  if (!t->converged)
+    t->factored = 0;
+  t->converged = 0;
 }
