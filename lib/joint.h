@@ -137,6 +137,8 @@ void joint_rows_add (joint *j, const double *impulse);
 /* Whether a body's velocities and motion are finite and within
  * CAROM_MAX_MAGNITUDE: a joint's pass is kept only if they stay so. */
 int joint_sane (const struct solver_body *b);
+/* The same with velocities v, w in place of its own. */
+int joint_sane_at (const struct solver_body *b, vec2 v, double w);
 
 /* The direct solve (joint_tree.c): the joints whose bodies form a tree
  * (each tree at most one joint to the ground), solved exactly in each pass

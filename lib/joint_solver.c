@@ -246,11 +246,16 @@ static vec2 anchor_velocity (const solver_body *A, const solver_body *B, const f
  * act on: finite and within CAROM_MAX_MAGNITUDE. A pass that would leave
  * them otherwise (forces beyond any joint's hold, a joint stretched across
  * the doubles) is dropped for that joint: it holds what it can. */
-int joint_sane (const solver_body *b)
+int joint_sane_at (const solver_body *b, vec2 v, double w)
 {
   /* is_moderate is false for NaN and the infinities too */
-  return is_moderate (b->v.x) && is_moderate (b->v.y) && is_moderate (b->w) && is_moderate (b->dp.x)
-         && is_moderate (b->dp.y) && is_moderate (b->da);
+  return is_moderate (v.x) && is_moderate (v.y) && is_moderate (w) && is_moderate (b->dp.x) && is_moderate (b->dp.y)
+         && is_moderate (b->da);
+}
+
+int joint_sane (const solver_body *b)
+{
+  return joint_sane_at (b, b->v, b->w);
 }
 
 /* ------------------------------------------- constraints shared by types */
@@ -754,6 +759,14 @@ void joint_warm_start (carom_world *world)
 }
 
 /* Each joint's own pass: what the tree does not solve. */
+/* Whether a joint's own pass does nothing: a revolute joint of the tree
+ * (its point rows are the tree's) with no spring, motor or limit, as every
+ * link of a chain is. */
+static int nothing_of_its_own (const joint *j)
+{
+  return j->type == CAROM_JOINT_REVOLUTE && j->tree && !springy (j) && !j->enable_motor && !j->enable_limit;
+}
+
 static void solve_each (carom_world *world, const step_context *ctx, int use_bias)
 {
   joints *js = &world->joints;
@@ -764,7 +777,7 @@ static void solve_each (carom_world *world, const step_context *ctx, int use_bia
       solver_body *SA, *SB, a, b, *A = &a, *B = &b;
       vec2 linear;
       double angular, axial, motor, lower, upper;
-      if (!j->alive)
+      if (!j->alive || nothing_of_its_own (j))
         continue;
       SA = body_a (world, j);
       SB = body_b (world, j);

@@ -621,37 +621,55 @@ void joint_tree_solve (carom_world *world)
       B = &sb[j->b];
       joint_push (j, n, pa, pb);
       {
-        solver_body a = *A, b = *B;
-        a.v.x += a.im * pa[0], a.v.y += a.im * pa[1], a.w += a.ii * pa[2];
-        b.v.x += b.im * pb[0], b.v.y += b.im * pb[1], b.w += b.ii * pb[2];
-        if (!joint_sane (&a) || !joint_sane (&b))
+        vec2 va = v2 (A->v.x + A->im * pa[0], A->v.y + A->im * pa[1]);
+        vec2 vb = v2 (B->v.x + B->im * pb[0], B->v.y + B->im * pb[1]);
+        double wa = A->w + A->ii * pa[2], wb = B->w + B->ii * pb[2];
+        if (!joint_sane_at (A, va, wa) || !joint_sane_at (B, vb, wb))
           continue; /* beyond the doubles: this joint holds nothing this pass */
-        *A = a, *B = b;
+        A->v = va, A->w = wa;
+        B->v = vb, B->w = wb;
       }
       joint_rows_add (j, n->x);
     }
 }
 
-/* Turn a body's rotation since the step began by a small angle: first
- * order, renormalised, as the sub-step's move does (solver.c). */
-static void turn (solver_body *b, double a)
+/* What a projection changes of a body: its velocities and its motion
+ * since the step began. */
+typedef struct moved {
+  vec2 v, dp;
+  double w, da;
+  rot2 dq;
+} moved;
+
+/* Body b moved by M^-1 p (p = J^T x), with the velocity of that move over
+ * the sub-step; its rotation turned by the small angle first order,
+ * renormalised, as the sub-step's move does (solver.c). */
+static moved displaced (const solver_body *b, const double *p, double inv_h)
 {
-  double c = b->dq.c - a * b->dq.s, s = b->dq.s + a * b->dq.c, n = 1.0 / sqrt (c * c + s * s);
-  b->dq.c = c * n, b->dq.s = s * n;
-  b->da += a;
+  double dx = b->im * p[0], dy = b->im * p[1], a = b->ii * p[2], c, s, n;
+  moved m;
+  m.v = b->v, m.dp = b->dp, m.w = b->w, m.da = b->da, m.dq = b->dq;
+  if (b->im == 0.0 && b->ii == 0.0)
+    return m;
+  m.dp.x += dx, m.dp.y += dy;
+  c = m.dq.c - a * m.dq.s, s = m.dq.s + a * m.dq.c, n = 1.0 / sqrt (c * c + s * s);
+  m.dq.c = c * n, m.dq.s = s * n;
+  m.da += a;
+  m.v.x += dx * inv_h, m.v.y += dy * inv_h;
+  m.w += a * inv_h;
+  return m;
 }
 
-/* Move a body by M^-1 p (p = J^T x) and give it the velocity of that move
- * over the sub-step. */
-static void displace (solver_body *b, const double *p, double inv_h)
+/* joint_sane of the body as moved */
+static int moved_sane (const moved *m)
 {
-  double dx = b->im * p[0], dy = b->im * p[1], da = b->ii * p[2];
-  if (b->im == 0.0 && b->ii == 0.0)
-    return;
-  b->dp.x += dx, b->dp.y += dy;
-  turn (b, da);
-  b->v.x += dx * inv_h, b->v.y += dy * inv_h;
-  b->w += da * inv_h;
+  return is_moderate (m->v.x) && is_moderate (m->v.y) && is_moderate (m->w) && is_moderate (m->dp.x)
+         && is_moderate (m->dp.y) && is_moderate (m->da);
+}
+
+static void take (solver_body *b, const moved *m)
+{
+  b->v = m->v, b->dp = m->dp, b->w = m->w, b->da = m->da, b->dq = m->dq;
 }
 
 static void project (carom_world *world, const step_context *ctx)
@@ -672,11 +690,10 @@ static void project (carom_world *world, const step_context *ctx)
       j = &js->list[n->joint];
       joint_push (j, n, pa, pb);
       {
-        solver_body *A = &sb[j->a < 0 ? world->slot_count : j->a], *B = &sb[j->b], a = *A, b = *B;
-        displace (&a, pa, ctx->inv_h);
-        displace (&b, pb, ctx->inv_h);
-        if (joint_sane (&a) && joint_sane (&b))
-          *A = a, *B = b;
+        solver_body *A = &sb[j->a < 0 ? world->slot_count : j->a], *B = &sb[j->b];
+        moved a = displaced (A, pa, ctx->inv_h), b = displaced (B, pb, ctx->inv_h);
+        if (moved_sane (&a) && moved_sane (&b))
+          take (A, &a), take (B, &b);
       }
     }
 }
