@@ -2,7 +2,7 @@
 # (stress/solver2d.c), run natively: make stress.
 .PHONY: stress check-stress
 
-$(BUILD)/stress: stress/stress.c stress/kinetic.h $(BUILD)/libcarom.a
+$(BUILD)/stress: stress/stress.c stress/kinetic.h stress/heavy_chain.h $(BUILD)/libcarom.a
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(WARN) $(OPT) $(CFLAGS) -o $@ $< $(BUILD)/libcarom.a -lm
 
