@@ -137,8 +137,9 @@ void joint_rows_add (joint *j, const double *impulse);
 /* Whether a body's velocities and motion are finite and within
  * CAROM_MAX_MAGNITUDE: a joint's pass is kept only if they stay so. */
 int joint_sane (const struct solver_body *b);
-/* The same with velocities v, w in place of its own. */
-int joint_sane_at (const struct solver_body *b, vec2 v, double w);
+/* The same of a body with velocities v, w and motion dp, da since the
+ * step began. */
+int joint_motion_sane (vec2 v, double w, vec2 dp, double da);
 
 /* The direct solve (joint_tree.c): the joints whose bodies form a tree
  * (each tree at most one joint to the ground), solved exactly in each pass
@@ -154,7 +155,7 @@ void joint_tree_solve (struct carom_world *world);
 /* A sub-step begins: its first pass factors afresh, unless the last
  * sub-step's projection converged (its factors then hold the rows where
  * the bodies are, but for its last Newton pass's correction). */
-void joint_tree_stale (struct carom_world *world);
+void joint_tree_next_substep (struct carom_world *world);
 /* After a sub-step's move: the displacements that remove every tree row's
  * position error (to first order), leaving the velocities alone (as the
  * contacts' split impulses do). */

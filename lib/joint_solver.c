@@ -246,16 +246,16 @@ static vec2 anchor_velocity (const solver_body *A, const solver_body *B, const f
  * act on: finite and within CAROM_MAX_MAGNITUDE. A pass that would leave
  * them otherwise (forces beyond any joint's hold, a joint stretched across
  * the doubles) is dropped for that joint: it holds what it can. */
-int joint_sane_at (const solver_body *b, vec2 v, double w)
+int joint_motion_sane (vec2 v, double w, vec2 dp, double da)
 {
   /* is_moderate is false for NaN and the infinities too */
-  return is_moderate (v.x) && is_moderate (v.y) && is_moderate (w) && is_moderate (b->dp.x) && is_moderate (b->dp.y)
-         && is_moderate (b->da);
+  return is_moderate (v.x) && is_moderate (v.y) && is_moderate (w) && is_moderate (dp.x) && is_moderate (dp.y)
+         && is_moderate (da);
 }
 
 int joint_sane (const solver_body *b)
 {
-  return joint_sane_at (b, b->v, b->w);
+  return joint_motion_sane (b->v, b->w, b->dp, b->da);
 }
 
 /* ------------------------------------------- constraints shared by types */
@@ -716,7 +716,7 @@ void joint_warm_start (carom_world *world)
 {
   joints *js = &world->joints;
   int32_t i;
-  joint_tree_stale (world); /* the sub-step starts where the last one moved the bodies */
+  joint_tree_next_substep (world); /* the sub-step starts where the last one moved the bodies */
   for (i = 0; i < js->count; ++i)
     {
       joint *j = &js->list[i];
@@ -758,7 +758,6 @@ void joint_warm_start (carom_world *world)
     }
 }
 
-/* Each joint's own pass: what the tree does not solve. */
 /* Whether a joint's own pass does nothing: a revolute joint of the tree
  * (its point rows are the tree's) with no spring, motor or limit, as every
  * link of a chain is. */
@@ -767,6 +766,7 @@ static int nothing_of_its_own (const joint *j)
   return j->type == CAROM_JOINT_REVOLUTE && j->tree && !springy (j) && !j->enable_motor && !j->enable_limit;
 }
 
+/* Each joint's own pass: what the tree does not solve. */
 static void solve_each (carom_world *world, const step_context *ctx, int use_bias)
 {
   joints *js = &world->joints;

@@ -493,11 +493,17 @@ static double joint_reach (const carom_world *world, const joint *j)
   return world->bodies[j->a].shape.size < sb ? world->bodies[j->a].shape.size : sb;
 }
 
-/* A row's error within those bounds; a row that moves no point (its
- * linear entries 0 on both bodies) is an angle. */
+/* Whether a row (its entries ja, jb for the two bodies) is an angle's: it
+ * moves no point (its linear entries 0 on both bodies). */
+static int angle_row (const double *ja, const double *jb)
+{
+  return ja[0] == 0.0 && ja[1] == 0.0 && jb[0] == 0.0 && jb[1] == 0.0;
+}
+
+/* A row's error within those bounds. */
 static double clamp_error (double c, const double *ja, const double *jb, double reach)
 {
-  double max = ja[0] == 0.0 && ja[1] == 0.0 && jb[0] == 0.0 && jb[1] == 0.0 ? MAX_PROJECTION_TURN : reach;
+  double max = angle_row (ja, jb) ? MAX_PROJECTION_TURN : reach;
   return c < -max ? -max : c > max ? max : c;
 }
 
@@ -624,7 +630,7 @@ void joint_tree_solve (carom_world *world)
         vec2 va = v2 (A->v.x + A->im * pa[0], A->v.y + A->im * pa[1]);
         vec2 vb = v2 (B->v.x + B->im * pb[0], B->v.y + B->im * pb[1]);
         double wa = A->w + A->ii * pa[2], wb = B->w + B->ii * pb[2];
-        if (!joint_sane_at (A, va, wa) || !joint_sane_at (B, vb, wb))
+        if (!joint_motion_sane (va, wa, A->dp, A->da) || !joint_motion_sane (vb, wb, B->dp, B->da))
           continue; /* beyond the doubles: this joint holds nothing this pass */
         A->v = va, A->w = wa;
         B->v = vb, B->w = wb;
@@ -660,13 +666,6 @@ static moved displaced (const solver_body *b, const double *p, double inv_h)
   return m;
 }
 
-/* joint_sane of the body as moved */
-static int moved_sane (const moved *m)
-{
-  return is_moderate (m->v.x) && is_moderate (m->v.y) && is_moderate (m->w) && is_moderate (m->dp.x)
-         && is_moderate (m->dp.y) && is_moderate (m->da);
-}
-
 static void take (solver_body *b, const moved *m)
 {
   b->v = m->v, b->dp = m->dp, b->w = m->w, b->da = m->da, b->dq = m->dq;
@@ -692,7 +691,7 @@ static void project (carom_world *world, const step_context *ctx)
       {
         solver_body *A = &sb[j->a < 0 ? world->slot_count : j->a], *B = &sb[j->b];
         moved a = displaced (A, pa, ctx->inv_h), b = displaced (B, pb, ctx->inv_h);
-        if (moved_sane (&a) && moved_sane (&b))
+        if (joint_motion_sane (a.v, a.w, a.dp, a.da) && joint_motion_sane (b.v, b.w, b.dp, b.da))
           take (A, &a), take (B, &b);
       }
     }
@@ -728,13 +727,8 @@ static int projected (carom_world *world)
       joint_rows (j, &sb[j->a < 0 ? world->slot_count : j->a], &sb[j->b], ja, jb, c);
       reach = joint_reach (world, j);
       for (r = 0; r < n->rows; ++r)
-        {
-          const double *a = ja + 3 * r, *b = jb + 3 * r;
-          double bound = a[0] == 0.0 && a[1] == 0.0 && b[0] == 0.0 && b[1] == 0.0 ? JOINT_PROJECT_TOLERANCE
-                                                                                 : JOINT_PROJECT_TOLERANCE * reach;
-          if (!(fabs (c[r]) <= bound))
-            return 0;
-        }
+        if (!(fabs (c[r]) <= (angle_row (ja + 3 * r, jb + 3 * r) ? 1.0 : reach) * JOINT_PROJECT_TOLERANCE))
+          return 0;
     }
   return 1;
 }
@@ -782,7 +776,7 @@ void joint_tree_project (carom_world *world, const step_context *ctx)
     }
 }
 
-void joint_tree_stale (carom_world *world)
+void joint_tree_next_substep (carom_world *world)
 {
   joint_tree *t = &world->joint_tree;
   if (!t->converged)
