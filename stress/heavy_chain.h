@@ -56,11 +56,11 @@ static double heavy_chain_stretch (double g, int horizontal, double tilt, int st
     {
       double gaps = 0.0;
       ok = carom_world_update (w, 1.0 / 60.0) == CAROM_OK;
-      for (i = 0; i <= LINKS; ++i)
+      for (i = 0; i <= LINKS && ok; ++i)
         {
           double ax, ay, bx, by;
-          ok = ok && carom_joint_get_anchors (w, joints[i], &ax, &ay, &bx, &by) == CAROM_OK;
-          gaps += hypot (bx - ax, by - ay);
+          ok = carom_joint_get_anchors (w, joints[i], &ax, &ay, &bx, &by) == CAROM_OK;
+          gaps += ok ? hypot (bx - ax, by - ay) : 0.0;
         }
       gaps /= LINKS * link;
       worst = gaps > worst ? gaps : worst;
