@@ -120,16 +120,26 @@ static inline double body_reach_capped (const body *b, double r, int swept)
   return swept || r < cap ? r : cap;
 }
 
-/* How far two bodies can close on each other in time h: no point of one
- * moves against any point of the other faster than |v_b - v_a| + |w_a| R_a
- * + |w_b| R_b, and gravity adds at most accel h^2 (as body_reach_uncapped:
- * both fall alike, or one does not fall). Never more than the sum of their
- * body_reach_uncapped, and much less for bodies that fall together. */
-static inline double body_pair_reach (const body *a, const body *b, double h, double accel)
+/* How far two bodies can close on each other in time h: in free flight no
+ * point of one moves against any point of the other faster than |v_b - v_a|
+ * + |w_a| R_a + |w_b| R_b, and gravity adds at most accel h^2 (as
+ * body_reach_uncapped: both fall alike, or one does not fall). With
+ * `stopped`, either may also be stopped within the step by what it lands on
+ * (the box below in a stack that falls onto the ground), and the other then
+ * closes on it at its own speed: the largest of |v_b - v_a|, |v_a| and |v_b|
+ * (a bounce that throws one back is met by the search after the impacts,
+ * contacts_after_impacts). Never more than the sum of their
+ * body_reach_uncapped, and less for bodies that fly together. */
+static inline double body_pair_reach (const body *a, const body *b, double h, double accel, int stopped)
 {
   double fall = a->inv_mass > 0.0 || b->inv_mass > 0.0 ? accel * h : 0.0;
-  return h * (v2_len (v2_sub (b->v, a->v)) + fabs (a->w) * a->shape.bound_radius
-              + fabs (b->w) * b->shape.bound_radius + fall);
+  double closing = v2_len (v2_sub (b->v, a->v));
+  if (stopped)
+    {
+      double sa = v2_len (a->v), sb = v2_len (b->v), fastest = sa > sb ? sa : sb;
+      closing = fastest > closing ? fastest : closing;
+    }
+  return h * (closing + fabs (a->w) * a->shape.bound_radius + fabs (b->w) * b->shape.bound_radius + fall);
 }
 
 static inline double body_reach (const body *b, double h, double accel, int continuous)

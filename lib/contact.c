@@ -690,7 +690,15 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
   if (reach >= 0.0)
     pc.margin = pc.slop + reach;
   else if (swept)
-    pc.margin = pc.slop + body_pair_reach (A, B, ctx->dt, ctx->accel);
+    /* with the world's continuous collision or a bullet, an inelastic pair
+     * looks as far as a body goes when what it flies with is stopped (a box
+     * of a falling stack landing under the next): nothing else follows it.
+     * A bouncy pair's bodies are followed by the impacts, which search
+     * again for the pairs they change (contacts_after_impacts); a body
+     * swept only for being fast looks no further than free flight closes
+     * the pair. */
+    pc.margin = pc.slop + body_pair_reach (A, B, ctx->dt, ctx->accel,
+                                           pc.restitution == 0.0 && (ctx->continuous || A->bullet || B->bullet));
   else
     pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], 0)
                 + body_reach_capped (B, world->broad.reach[b], 0);

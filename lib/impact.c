@@ -284,6 +284,19 @@ static void impact_restore (carom_world *world)
   c->kept = c->kept_points = 0;
 }
 
+/* Whether the time of impact's verdict of apart (TOI_APART) holds for the
+ * rest of the step, so the contact can take no impulse in it. The search
+ * follows both bodies in free flight, where two bodies that both fall never
+ * close by gravity; but either may be stopped within the step by what it
+ * rests on or strikes (a box landing on the ground, another falling just
+ * above it), and the other then closes on it by up to accel dt^2 / 2 more.
+ * Such a pair stays an ordinary speculative contact in the sub-steps, which
+ * act only when its gap closes. */
+static int apart_holds (const solver_body *a, const solver_body *b, const step_context *ctx)
+{
+  return !(ctx->accel > 0.0 && a->moves == MOVES_DYNAMIC && b->moves == MOVES_DYNAMIC);
+}
+
 /* An impact (impact_within_step) where its pieces first touch, each body in
  * free flight until then (toi.c): touch_points, the deepest taking the place
  * of the detected point meeting first (or, when none meets by itself, the
@@ -295,7 +308,7 @@ static void impact_points (carom_world *world, contact *k, const body *ba, const
   vec2 axis;
   double t = toi_first_touch (world, k, a, b, ctx, 0.0, ctx->dt, NULL, &axis);
   int32_t j, first = -1;
-  if (t == TOI_APART)
+  if (t == TOI_APART && apart_holds (a, b, ctx))
     {
       impact_inert (k);
       for (j = 0; j < k->count; ++j)
