@@ -255,17 +255,13 @@ static void drops_on_columns (void)
   printf ("     the worst: a column of %d, dropped %g m, continuous collision %s\n", at_n, at_h, at_c ? "on" : "off");
 }
 
-/* One bin of 200 boxes of side `size` (friction 0.6, g = 10, 10 s at dt
- * 1/60): dropped from an 11-wide grid 1.6 sides apart, each turned 0.37 rad
- * more than the last, between two walls 20 sides apart. The deepest
- * contact over the last second, as a fraction of a side. */
-static double bin_of_boxes (double size, int continuous)
+/* A world for piles of boxes of side `size` (friction 0.6, g = 10), its
+ * ground a static box 40 sides wide whose top is at y = 0. */
+static carom_world *pile_world (double size, int continuous)
 {
   carom_world *w = NULL;
   carom_world_def def;
   carom_body_def d;
-  double deepest = 0.0;
-  int i, k, step;
   carom_world_def_init (&def, sizeof def);
   def.gravity_y = -10.0;
   def.friction = 0.6;
@@ -275,6 +271,39 @@ static double bin_of_boxes (double size, int continuous)
   d.type = CAROM_STATIC;
   d.y = -0.5 * size;
   carom_world_add_box (w, &d, 40 * size, size, NULL);
+  return w;
+}
+
+/* Steps a pile 10 s at dt 1/60: the deepest contact over the last second,
+ * as a fraction of a side. */
+static double pile_deepest (carom_world *w, double size)
+{
+  double deepest = 0.0;
+  int k, step;
+  for (step = 0; step < 600; ++step)
+    {
+      carom_world_update (w, 1.0 / 60);
+      for (k = 0; step >= 540 && k < carom_world_contact_count (w); ++k)
+        {
+          double depth;
+          carom_world_get_contact (w, k, NULL, NULL, NULL, NULL, NULL, NULL, &depth);
+          deepest = depth > deepest ? depth : deepest;
+        }
+    }
+  return deepest / size;
+}
+
+/* One bin of 200 boxes of side `size`, dropped from an 11-wide grid 1.6
+ * sides apart, each turned 0.37 rad more than the last, between two walls
+ * 20 sides apart: pile_deepest. */
+static double bin_of_boxes (double size, int continuous)
+{
+  carom_world *w = pile_world (size, continuous);
+  carom_body_def d;
+  double deepest;
+  int i;
+  carom_body_def_init (&d, sizeof d);
+  d.type = CAROM_STATIC;
   d.x = -10 * size, d.y = 20 * size;
   carom_world_add_box (w, &d, size, 40 * size, NULL);
   d.x = 10 * size;
@@ -285,60 +314,31 @@ static double bin_of_boxes (double size, int continuous)
       d.x = (-8 + (i % 11) * 1.6) * size, d.y = (2 + (i / 11) * 1.6) * size, d.angle = 0.37 * i;
       carom_world_add_box (w, &d, size, size, NULL);
     }
-  for (step = 0; step < 600; ++step)
-    {
-      carom_world_update (w, 1.0 / 60);
-      for (k = 0; step >= 540 && k < carom_world_contact_count (w); ++k)
-        {
-          double depth;
-          carom_world_get_contact (w, k, NULL, NULL, NULL, NULL, NULL, NULL, &depth);
-          deepest = depth > deepest ? depth : deepest;
-        }
-    }
+  deepest = pile_deepest (w, size);
   carom_world_destroy (w);
-  return deepest / size;
+  return deepest;
 }
 
-/* A column of 18 boxes of side 5 cm built 2.5 mm apart (g = 10, friction
- * 0.6), 10 s: the deepest contact over the last second, as a fraction of a
- * side, and whether the column has fallen (its top below 17 sides). */
+/* A column of 18 boxes of side 5 cm built 2.5 mm apart: pile_deepest, and
+ * whether the column has fallen (its top below 17 sides). */
 static double column_of_small_boxes (int continuous, int *fallen)
 {
-  carom_world *w = NULL;
-  carom_world_def def;
+  double size = 0.05, deepest, x, y;
+  carom_world *w = pile_world (size, continuous);
   carom_body_def d;
   carom_body_id top = CAROM_NULL_BODY;
-  double size = 0.05, deepest = 0.0, x, y;
-  int i, k, step;
-  carom_world_def_init (&def, sizeof def);
-  def.gravity_y = -10.0;
-  def.friction = 0.6;
-  if (carom_world_init (&w, &def) != CAROM_OK || carom_world_set_continuous (w, continuous) != CAROM_OK)
-    exit (2);
-  carom_body_def_init (&d, sizeof d);
-  d.type = CAROM_STATIC;
-  d.y = -0.5 * size;
-  carom_world_add_box (w, &d, 40 * size, size, NULL);
+  int i;
   carom_body_def_init (&d, sizeof d);
   for (i = 0; i < 18; ++i)
     {
       d.y = (i + 0.5) * size + (i + 1) * 0.05 * size;
       carom_world_add_box (w, &d, size, size, &top);
     }
-  for (step = 0; step < 600; ++step)
-    {
-      carom_world_update (w, 1.0 / 60);
-      for (k = 0; step >= 540 && k < carom_world_contact_count (w); ++k)
-        {
-          double depth;
-          carom_world_get_contact (w, k, NULL, NULL, NULL, NULL, NULL, NULL, &depth);
-          deepest = depth > deepest ? depth : deepest;
-        }
-    }
+  deepest = pile_deepest (w, size);
   carom_body_get_position (w, top, &x, &y);
   carom_world_destroy (w);
   *fallen = y < 17.0 * size;
-  return deepest / size;
+  return deepest;
 }
 
 /* Case 19, a known failure: piles of small boxes settle without boxes left
