@@ -34,9 +34,10 @@ double contact_solve (struct carom_world *world, const step_context *ctx, int32_
  * first pass, which starts from no pseudo-impulse. */
 void contact_push_out (struct carom_world *world, const step_context *ctx, int first);
 
-/* Shock propagation (shock.c): when touching bodies differ in mass more
- * than tenfold under gravity, a pass from the ground up after the solve and
- * the second solve of each sub-step, holding each lower body still. */
+/* Shock propagation (shock.c): under gravity, where touching bodies differ
+ * in mass more than tenfold and along columns (bodies resting on one
+ * other), a pass from the ground up after the solve and the second solve
+ * of each sub-step, holding each lower body still. */
 void contact_shock_prepare (struct carom_world *world, const step_context *ctx);
 /* Room for the step's shock rows (0 when memory ran out), and its release. */
 int contact_shock_reserve (struct carom_world *world);

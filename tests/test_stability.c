@@ -150,39 +150,55 @@ static void test_mass_ratio_1000_both_ways (void **state)
     }
 }
 
-/* Case 4b: the heavy box (1000:1) on a column of three light ones. Shock
+/* Case 4b: the heavy box (1000:1) on a column of three light ones, and on
+ * a column of two light ones that stands on two side by side. Shock
  * propagation holds the heavy-on-light contact and every contact below it
- * (shock.c): a column the heavy box's weight must pass through. Bound: over
- * 10 s the heavy box never sinks more than a slop per contact beneath it
- * (0.005 each, size 0.5 of a unit box), ends at rest (under 1e-3 per
- * second), without sideways creep. */
+ * (shock.c): the bodies the heavy box's weight must pass through, whether
+ * or not they rest on one body each. Bound: over 10 s the heavy box never sinks more
+ * than a slop per contact beneath it (0.005 each, size 0.5 of a unit box);
+ * on the column of three it ends at rest (under 1e-3 per second), without
+ * sideways creep. */
 static void test_mass_ratio_1000_on_a_column (void **state)
 {
-  carom_world *w = world_with (0, -10, 0, 0.6);
-  carom_body_def d;
-  carom_body_id heavy = CAROM_NULL_BODY;
-  double x, y, vx, vy, sink = 0.0;
-  int i, step;
+  int pyramid;
   (void) state;
-  add_static_box (w, 0, -0.5, 20, 1);
-  /* built 0.006 apart, just beyond the slop: the contacts start apart,
-   * not resting, so no cold start holds the column; shock propagation must */
-  for (i = 0; i < 4; ++i)
+  for (pyramid = 0; pyramid < 2; ++pyramid)
     {
-      carom_body_def_init (&d, sizeof d);
-      d.y = 0.5 + i + 0.006 * (i + 1), d.density = i == 3 ? 1000.0 : 1.0;
-      assert_status (carom_world_add_box (w, &d, 1, 1, &heavy), CAROM_OK);
+      carom_world *w = world_with (0, -10, 0, 0.6);
+      carom_body_def d;
+      carom_body_id heavy = CAROM_NULL_BODY;
+      double x, y, vx, vy, sink = 0.0, top = 3.5;
+      int i, step, levels = 4;
+      add_static_box (w, 0, -0.5, 20, 1);
+      /* built 0.006 apart, just beyond the slop: the contacts start apart,
+       * not resting, so no cold start holds them; shock propagation must */
+      for (i = 0; i < levels; ++i)
+        {
+          carom_body_def_init (&d, sizeof d);
+          d.y = 0.5 + i + 0.006 * (i + 1), d.density = i == levels - 1 ? 1000.0 : 1.0;
+          d.x = pyramid && i == 0 ? -0.55 : 0.0;
+          assert_status (carom_world_add_box (w, &d, 1, 1, &heavy), CAROM_OK);
+          if (pyramid && i == 0)
+            {
+              d.x = 0.55;
+              assert_status (carom_world_add_box (w, &d, 1, 1, NULL), CAROM_OK);
+            }
+        }
+      for (step = 0; step < 600; ++step)
+        {
+          carom_world_update (w, 1.0 / 60);
+          carom_body_get_position (w, heavy, &x, &y);
+          sink = top - y > sink ? top - y : sink;
+        }
+      carom_body_get_velocity (w, heavy, &vx, &vy);
+      print_message ("heavy box on %s: sank %.3g, ends at (%.3g, %.3g) m/s, %.3g sideways\n",
+                     pyramid ? "two on two" : "a column of three", sink, vx, vy, x);
+      assert_true (sink < levels * 0.005);
+      /* on two it creeps sideways (docs/stability.md, not yet held) */
+      if (!pyramid)
+        assert_true (fabs (vx) < 1e-3 && fabs (vy) < 1e-3 && fabs (x) < 1e-6);
+      carom_world_destroy (w);
     }
-  for (step = 0; step < 600; ++step)
-    {
-      carom_world_update (w, 1.0 / 60);
-      carom_body_get_position (w, heavy, &x, &y);
-      sink = 3.5 - y > sink ? 3.5 - y : sink;
-    }
-  carom_body_get_velocity (w, heavy, &vx, &vy);
-  assert_true (sink < 4 * 0.005);
-  assert_true (fabs (vx) < 1e-3 && fabs (vy) < 1e-3 && fabs (x) < 1e-6);
-  carom_world_destroy (w);
 }
 
 /* Fuzz finding F10: a box 1e122 times heavier than the one it lands on,
@@ -380,6 +396,81 @@ static void test_small_boxes_under_full_gravity_stand (void **state)
       assert_world_finite (w);
       carom_world_destroy (w);
     }
+}
+
+/* Columns whose boxes land on each other: 5 and 10 boxes of side 10 cm,
+ * 5 to 20 of side 1 m, built apart by 0, 2% and 10% of a side and shifted
+ * alternately 1% of a side left and right (Solver2D's vertical stack),
+ * friction 0.3, g = 10, for 10 s, continuous collision off and on. The
+ * passes carry a landing down the column one contact per pass, and the
+ * warm start brings it back up: the column rang along its length, its
+ * boxes sinking into each other and thrown back up, clear of the ones
+ * below (by up to 21% of a side; ten 10 cm boxes built touching fell).
+ * Shock propagation holds the column (shock.c). Bounds, for every column:
+ * once two neighbours have met (within the slop, 1% of a side) the gap
+ * between them never opens past the slop again, the top never moves
+ * sideways more than 5% of a side from where it was built, and at 10 s it
+ * is less than 1% of the column's height below its stacked height. (Ten
+ * 10 cm boxes built touching move their top 2.4% of a side, twenty 1 m
+ * ones 1.3%; longer columns of small boxes still fall, docs/stability.md,
+ * case 19.) */
+static void test_columns_land_without_ringing (void **state)
+{
+  static const double gaps[] = {0.0, 0.02, 0.1};
+  double worst_gap = 0.0, worst_side = 0.0, worst_sag = 0.0;
+  int small, n, gi, cont;
+  (void) state;
+  for (small = 0; small < 2; ++small)
+    for (n = 5; n <= (small ? 10 : 20); n += 5)
+      for (gi = 0; gi < 3; ++gi)
+        for (cont = 0; cont < 2; ++cont)
+          {
+            carom_world *w = world_with (0, -10, 0, 0.3);
+            carom_body_def d;
+            carom_body_id ids[20];
+            double size = small ? 0.1 : 1.0, x0 = (n % 2 ? -0.01 : 0.01) * size, x, y, side = 0.0, sag, opened = 0.0;
+            int met[20] = {0}, i, step;
+            assert_status (carom_world_set_continuous (w, cont), CAROM_OK);
+            add_static_box (w, 0.0, -size, 200 * size, 2 * size);
+            carom_body_def_init (&d, sizeof d);
+            for (i = 0; i < n; ++i)
+              {
+                d.x = (i % 2 ? 0.01 : -0.01) * size;
+                d.y = size * (0.5 + i * (1.0 + gaps[gi]));
+                assert_status (carom_world_add_box (w, &d, size, size, &ids[i]), CAROM_OK);
+              }
+            for (step = 0; step < 600; ++step)
+              {
+                double below;
+                assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+                carom_body_get_position (w, ids[0], NULL, &below);
+                for (i = 1; i < n; ++i)
+                  {
+                    double at, gap;
+                    carom_body_get_position (w, ids[i], NULL, &at);
+                    gap = at - below - size;
+                    if (gap <= 0.01 * size)
+                      met[i] = 1;
+                    else if (met[i] && gap > opened)
+                      opened = gap;
+                    below = at;
+                  }
+                carom_body_get_position (w, ids[n - 1], &x, &y);
+                side = fabs (x - x0) > side ? fabs (x - x0) : side;
+              }
+            sag = size * (n - 0.5) - y;
+            if (!(opened <= 0.01 * size && side < 0.05 * size && sag < 0.01 * n * size))
+              fail_msg ("%d boxes of %g, %g of a side apart, continuous %d: a gap opened %.3g of a side, the top "
+                        "moved %.3g of a side, sagged %.3g of the height",
+                        n, size, gaps[gi], cont, opened / size, side / size, sag / (n * size));
+            assert_world_finite (w);
+            worst_gap = opened / size > worst_gap ? opened / size : worst_gap;
+            worst_side = side / size > worst_side ? side / size : worst_side;
+            worst_sag = sag / (n * size) > worst_sag ? sag / (n * size) : worst_sag;
+            carom_world_destroy (w);
+          }
+  print_message ("columns: gaps reopened at most %.3g of a side, tops moved %.3g of a side, sagged %.3g of the "
+                 "height\n", worst_gap, worst_side, worst_sag);
 }
 
 /* Stacks that land on themselves with continuous collision: five boxes of
@@ -940,6 +1031,7 @@ int main (void)
     cmocka_unit_test (test_huge_friction_stays_finite),
     cmocka_unit_test (test_small_boxes_under_full_gravity_stand),
     cmocka_unit_test (test_continuous_stacks_land_on_each_other),
+    cmocka_unit_test (test_columns_land_without_ringing),
     cmocka_unit_test (test_elastic_cluster_keeps_its_energy),
     cmocka_unit_test (test_bullet_300_never_passes_thin_wall),
     cmocka_unit_test (test_overlap_recovery_adds_no_energy),
