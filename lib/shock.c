@@ -215,16 +215,17 @@ static void shock_pass (carom_world *world, const step_context *ctx, double tol)
       solver_body *a = &sb[r->a], *b = &sb[r->b];
       /* hold the lower body still: only the upper one takes the impulse */
       solver_body *up = r->a_is_lower ? b : a;
+      /* x is written below for every point of a row that is solved */
       double err[MANIFOLD_MAX_POINTS], x[MANIFOLD_MAX_POINTS], worst = 0.0;
       for (j = 0; j < r->count; ++j)
         {
           const shock_point *p = &r->p[j];
           /* the relative normal speed of b against a, as everywhere, against
-           * what the point may approach by (a speculative gap) */
+           * what the point may approach by (a speculative gap; by a select:
+           * whether a point is apart is not predictable) */
           double s = row_separation (a, b, p);
-          err[j] = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + (s > 0.0 ? s * ctx->inv_h : 0.0);
+          err[j] = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + select_double (s > 0.0, s * ctx->inv_h, 0.0);
           worst = err[j] < worst ? err[j] : worst;
-          x[j] = 0.0;
         }
       if (worst >= -tol)
         continue; /* the iterations did well enough here */
