@@ -597,7 +597,9 @@ EOF
   sub-step rides in the same walk over the batches as the last solve pass,
   so the batches are walked three times a sub-step, as Box2D v3 walks its
   constraints), and shock propagation under a heavy body resting on a
-  light one. Box2D v3 solves in float, four lanes in the SSE2 build
+  light one and along columns (in the rain, whose polygons pile on each
+  other, the pass takes about a tenth of the step: docs/physics.md).
+  Box2D v3 solves in float, four lanes in the SSE2 build
   measured here (eight with AVX2).
 - **Set-up and detection** are where carom executes more. Every step,
   every contact's lever arms, effective masses, 2x2 matrix, time-of-impact
