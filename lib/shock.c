@@ -96,26 +96,16 @@ static int column_link (const contact *k, const solver_body *lower)
   return k->restitution == 0.0 && lower->im > 0.0;
 }
 
-/* Which bodies the pass holds others on, in `mark`: every dynamic body
- * that rests on a column's link alone, both bodies of every heavy-on-light
- * contact, then, going down the levels, every body such a body rests on. */
-static void mark_loaded (carom_world *world, const int32_t *order, int32_t count, int32_t *mark, vec2 up_dir)
+/* Which bodies the pass holds others on, in `mark`, which holds
+ * count_supports' counts: every dynamic body that rests on a column's link
+ * alone, both bodies of every heavy-on-light contact, then, going down the
+ * levels, every body such a body rests on. */
+static void mark_loaded (carom_world *world, const int32_t *order, int32_t count, int32_t *mark)
 {
   const contacts *c = &world->contacts;
   const solver_body *sb = world->solver_bodies;
   const int32_t *level = world->solver_scratch;
   int32_t i;
-  for (i = 0; i < world->slot_count; ++i)
-    mark[i] = 0;
-  /* what each body rests on, a column's link counted 1 and anything else
-   * 2: a body on a link alone counts 1 */
-  for (i = 0; i < count; ++i)
-    {
-      const contact *k = &c->list[order[i]];
-      int a_is_lower = level[k->a] < level[k->b];
-      if (rests_on (k, level, up_dir))
-        mark[a_is_lower ? k->b : k->a] += column_link (k, &sb[a_is_lower ? k->a : k->b]) ? 1 : 2;
-    }
   for (i = 0; i < world->slot_count; ++i)
     mark[i] = mark[i] == 1 && sb[i].im > 0.0;
   for (i = 0; i < c->count; ++i)
@@ -265,34 +255,36 @@ void contact_shock_destroy (carom_world *world)
   world->shock_cap = 0;
 }
 
-/* Whether some two touching dynamic bodies differ in mass more than
- * SHOCK_MASS_RATIO, or some body may rest on a column's link alone: the
- * same count as mark_loaded's, by each contact's normal instead of the
- * levels (not computed yet, and not worth computing for a world without
- * either), in `count` (room for one per slot). */
-static int needs_shock (const carom_world *world, vec2 up_dir, int32_t *count)
+/* What each body rests on, in `count` (one per slot): a column's link
+ * counted 1 and any other support 2, so a body on a link alone counts 1;
+ * the body a contact's normal points up to (within 60 degrees, as
+ * rests_on) rests on the other. Returns whether the step needs shock
+ * propagation: some two touching dynamic bodies differ in mass more than
+ * SHOCK_MASS_RATIO, or some dynamic body rests on a column's link alone.
+ * By the normals, not the levels: those are not computed yet, and not
+ * worth computing for a world that needs neither. */
+static int count_supports (const carom_world *world, vec2 up_dir, int32_t *count)
 {
   const contacts *c = &world->contacts;
   const solver_body *sb = world->solver_bodies;
   int32_t i;
+  int needs = 0;
   for (i = 0; i < world->slot_count; ++i)
     count[i] = 0;
   for (i = 0; i < c->count; ++i)
     {
       const contact *k = &c->list[i];
       double lift = v2_dot (k->points[0].normal, up_dir);
-      if (heavy_on_light_pair (&sb[k->a], &sb[k->b]))
-        return 1;
+      needs |= heavy_on_light_pair (&sb[k->a], &sb[k->b]);
       /* the normal points from a to b: b rests on a when it points up */
       if (lift >= 0.5)
         count[k->b] += column_link (k, &sb[k->a]) ? 1 : 2;
       else if (lift <= -0.5)
         count[k->a] += column_link (k, &sb[k->b]) ? 1 : 2;
     }
-  for (i = 0; i < world->slot_count; ++i)
-    if (count[i] == 1 && sb[i].im > 0.0)
-      return 1;
-  return 0;
+  for (i = 0; i < world->slot_count && !needs; ++i)
+    needs = count[i] == 1 && sb[i].im > 0.0;
+  return needs;
 }
 
 /* Where the level order goes in solver_scratch (solver_reserve's room). */
@@ -325,10 +317,10 @@ void contact_shock_prepare (carom_world *world, const step_context *ctx)
   up_dir = v2_neg (v2_normalize (ctx->gravity));
   /* solver_reserve leaves room for the level order and the marks after it */
   mark = level_order (world) + world->contacts.count;
-  if (!needs_shock (world, up_dir, mark))
+  if (!count_supports (world, up_dir, mark))
     return;
   count = levels (world, &order);
-  mark_loaded (world, order, count, mark, up_dir);
+  mark_loaded (world, order, count, mark);
   world->shock_count = make_rows (world, ctx, order, count, mark);
 }
 
