@@ -39,6 +39,10 @@ int32_t collide_polygon_circle (const convex_piece *a, xform xa, vec2 cb, double
  * between the two pieces' projections on that edge normal, *axis, turned to
  * point from a towards b. */
 double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis);
+/* The same, and the face whose normal that is: edge e of a as e, edge e of
+ * b as -1 - e. */
+double polygons_separation_face (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis,
+                                 int32_t *face);
 
 /* The largest separation of piece q from p's edges and its edge (the
  * first to reach it), every edge searched in turn until the largest so far

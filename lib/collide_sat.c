@@ -135,13 +135,21 @@ double sat_max_separation (const convex_piece *p, xform xp, const convex_piece *
   return best;
 }
 
-double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis)
+double polygons_separation_face (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis,
+                                 int32_t *face)
 {
   int32_t edge_a, edge_b, outer_edge;
   double outer, sa = sat_max_separation (a, xa, b, xb, INFINITY, &edge_a, &outer, &outer_edge);
   double sb = sat_max_separation (b, xb, a, xa, INFINITY, &edge_b, &outer, &outer_edge);
   *axis = sb > sa ? v2_neg (rot2_apply (xb.q, b->normals[edge_b])) : rot2_apply (xa.q, a->normals[edge_a]);
+  *face = sb > sa ? -1 - edge_b : edge_a;
   return sa > sb ? sa : sb;
+}
+
+double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis)
+{
+  int32_t face;
+  return polygons_separation_face (a, xa, b, xb, axis, &face);
 }
 
 /* The largest hysteresis between the two pieces' faces, over the smaller

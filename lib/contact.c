@@ -378,17 +378,6 @@ void contact_collide_at (const carom_world *world, const contact *k, xform xa, x
   narrow_phase (world, k->a, k->b, k->piece_a, k->piece_b, P, Q, xa, xb, margin, toward, m);
 }
 
-/* The first root tau >= 0 of g0 + g1 tau - curve tau^2 / 2 (g0 >= 0), in
- * the form that does not cancel; INFINITY when it has none. */
-static double gap_root (double g0, double g1, double curve)
-{
-  double disc = g1 * g1 + 2.0 * curve * g0, den;
-  if (!(disc >= 0.0))
-    return INFINITY;
-  den = sqrt (disc) - g1;
-  return den > 0.0 ? 2.0 * g0 / den : INFINITY;
-}
-
 /* The points that stand for body X's piece (its vertices, or a circle's
  * centre with *radius), in its body's frame: how many, and the array. */
 static int32_t piece_points (const body *X, int32_t piece, const vec2 **v, vec2 *one, double *radius)
@@ -446,7 +435,7 @@ double contact_piece_first_reach (const carom_world *world, const contact *k, in
        * its first root, in the form that does not cancel */
       double g0 = -(v2_dot (d, v2_add (x.p, r)) + radius) - other;
       double g1 = -v2_dot (d, v2_add (vel, v2_scale (v2_perp (r), w))) - other_rate;
-      double tau = gap_root (g0, g1, curve);
+      double tau = contact_gap_root (g0, g1, curve);
       first = tau < first ? tau : first;
     }
   return first;
@@ -487,7 +476,7 @@ double contact_pieces_first_meeting (const carom_world *world, const contact *k,
       piece_track l = a_small ? track_point (pb[j], rb, xb, vb, wb, v2_neg (n)) : track_point (pa[j], ra, xa, va, wa, n);
       for (i = 0; i < ns; ++i)
         {
-          double tau = gap_root (-(l.at + small[i].at), -(l.rate + small[i].rate), curve);
+          double tau = contact_gap_root (-(l.at + small[i].at), -(l.rate + small[i].rate), curve);
           first = tau < first ? tau : first;
         }
     }
@@ -501,15 +490,32 @@ double contact_reach_along (const carom_world *world, const contact *k, rot2 qa,
   return piece_reach_along (A, k->piece_a, qa, n, turn_a) + piece_reach_along (B, k->piece_b, qb, v2_neg (n), turn_b);
 }
 
-double contact_separation_at (const carom_world *world, const contact *k, xform xa, xform xb, vec2 *axis)
+/* Which piece's edge polygons_separation_face named (edge e of A as e, of
+ * B as -1 - e): the reference face, and the other piece, incident. */
+static void contact_face_side (contact_face *face, int32_t edge)
+{
+  face->side = edge < 0;
+  face->edge = edge < 0 ? -1 - edge : edge;
+  face->ref = edge < 0 ? face->pb : face->pa;
+  face->inc = edge < 0 ? face->pa : face->pb;
+}
+
+double contact_separation_face_at (const carom_world *world, const contact *k, xform xa, xform xb, vec2 *axis,
+                                   contact_face *face)
 {
   const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
   manifold m;
-  double deepest = -INFINITY;
-  int32_t j;
+  double deepest = -INFINITY, s;
+  int32_t j, edge;
+  face->ref = NULL;
   if (A->shape.kind == CAROM_SHAPE_POLYGON && B->shape.kind == CAROM_SHAPE_POLYGON && k->piece_a >= 0
       && k->piece_b >= 0)
-    return polygons_separation (&A->shape.pieces[k->piece_a], xa, &B->shape.pieces[k->piece_b], xb, axis);
+    {
+      face->pa = &A->shape.pieces[k->piece_a], face->pb = &B->shape.pieces[k->piece_b];
+      s = polygons_separation_face (face->pa, xa, face->pb, xb, axis, &edge);
+      contact_face_side (face, edge);
+      return s;
+    }
   if (A->shape.kind == CAROM_SHAPE_COMPOUND || B->shape.kind == CAROM_SHAPE_COMPOUND)
     {
       convex_piece ca, cb;
@@ -517,7 +523,12 @@ double contact_separation_at (const carom_world *world, const contact *k, xform 
       body_pieces (A, &P, &ca);
       body_pieces (B, &Q, &cb);
       if (P[k->piece_a].count > 0 && Q[k->piece_b].count > 0)
-        return polygons_separation (&P[k->piece_a], xa, &Q[k->piece_b], xb, axis);
+        {
+          face->pa = &P[k->piece_a], face->pb = &Q[k->piece_b];
+          s = polygons_separation_face (face->pa, xa, face->pb, xb, axis, &edge);
+          contact_face_side (face, edge);
+          return s;
+        }
     }
   *axis = v2 (1.0, 0.0);
   contact_collide_at (world, k, xa, xb, INFINITY, NULL, &m);
@@ -528,6 +539,12 @@ double contact_separation_at (const carom_world *world, const contact *k, xform 
         *axis = m.points[j].normal;
       }
   return -deepest;
+}
+
+double contact_separation_at (const carom_world *world, const contact *k, xform xa, xform xb, vec2 *axis)
+{
+  contact_face face;
+  return contact_separation_face_at (world, k, xa, xb, axis, &face);
 }
 
 static double material (double own, double fallback)

@@ -172,6 +172,18 @@ double contact_piece_first_reach (const struct carom_world *world, const contact
  * closing at the pair's rate now, less curve tau^2 / 2; INFINITY when none
  * does, -1 when the pieces have too many points to pair up (more than
  * CONTACT_PAIRED_POINTS on both, or their product beyond its square). */
+/* The first root tau >= 0 of g0 + g1 tau - curve tau^2 / 2 (g0 >= 0): when
+ * a gap g0, changing at g1 now and closing at most by curve tau^2 / 2 more,
+ * can first close; in the form that does not cancel, INFINITY when it
+ * never does. */
+static inline double contact_gap_root (double g0, double g1, double curve)
+{
+  double disc = g1 * g1 + 2.0 * curve * g0, den;
+  if (!(disc >= 0.0))
+    return INFINITY;
+  den = sqrt (disc) - g1;
+  return den > 0.0 ? 2.0 * g0 / den : INFINITY;
+}
 #define CONTACT_PAIRED_POINTS 16
 double contact_pieces_first_meeting (const struct carom_world *world, const contact *k, xform xa, vec2 va, double wa,
                                      xform xb, vec2 vb, double wb, vec2 n, double curve);
@@ -182,6 +194,18 @@ double contact_pieces_first_meeting (const struct carom_world *world, const cont
  * unit axis *axis (from A towards B): an edge normal, or the direction of
  * the distance. */
 double contact_separation_at (const struct carom_world *world, const contact *k, xform xa, xform xb, vec2 *axis);
+/* The face a separation of two polygon pieces was measured on: the edge
+ * `edge` of the reference piece `ref` (A's piece when side is 0, B's when
+ * 1), the other piece `inc`; pa, pb: A's and B's pieces. ref is NULL when
+ * a circle's distance gave the separation. */
+typedef struct contact_face {
+  const convex_piece *ref, *inc, *pa, *pb;
+  int32_t edge;
+  int side;
+} contact_face;
+/* contact_separation_at, and the face it was measured on. */
+double contact_separation_face_at (const struct carom_world *world, const contact *k, xform xa, xform xb, vec2 *axis,
+                                   contact_face *face);
 /* Contact k's convex piece of one body (side 0: A, 1: B), in its body's
  * frame: a circle body's one circle (made in `circle`), a polygon's or a
  * compound's piece; NULL for the vertex-edge method's whole outline. */

@@ -9,7 +9,11 @@
  * turning of a shape moves its extent along a fixed direction no faster):
  * conservative advancement by the time that bound takes to close g never
  * passes the first touch, and a bound that never closes it ends the search
- * at once. A secant through its last two trials, or two, four or eight
+ * at once. A polygon's face is also followed as it turns with its body
+ * (face_time): a pair that leaves an impact slowly while spinning closes
+ * fast along any fixed axis (the face's far end swings in) but not on its
+ * own face, and would otherwise be crept away from by advances as small
+ * as its gap. A secant through its last two trials, or two, four or eight
  * times as far, usually steps past the touch at once (it may step over a
  * touch and a parting within that stretch, which a grazing corner could
  * make), and then the touch is bracketed and found by regula falsi (the
@@ -70,6 +74,81 @@ static double separation_axis (const toi_pair *p, double t, vec2 *axis)
 {
   return contact_separation_at (p->world, p->k, toi_pose (p->world, p->k->a, p->a, p->ctx, t, p->shift_a),
                                 toi_pose (p->world, p->k->b, p->b, p->ctx, t, p->shift_b), axis);
+}
+
+/* The same, and the face it was measured on. */
+static double separation_face (const toi_pair *p, double t, vec2 *axis, contact_face *face)
+{
+  return contact_separation_face_at (p->world, p->k, toi_pose (p->world, p->k->a, p->a, p->ctx, t, p->shift_a),
+                                     toi_pose (p->world, p->k->b, p->b, p->ctx, t, p->shift_b), axis, face);
+}
+
+/* A face of a polygon piece and the two bodies at time t (face_time). */
+typedef struct face_frame {
+  const contact_face *face;
+  xform xr, xi;     /* the reference and incident bodies' poses at t */
+  vec2 vr, vi, n;   /* their velocities at t, the face's normal */
+  double at, wr, wi; /* the face line's offset along n; their spins */
+} face_frame;
+
+static face_frame face_at (const toi_pair *p, const contact_face *face, double t, vec2 ga, vec2 gb)
+{
+  const solver_body *R = face->side ? p->b : p->a, *I = face->side ? p->a : p->b;
+  face_frame f;
+  f.face = face;
+  f.xr = toi_pose (p->world, face->side ? p->k->b : p->k->a, R, p->ctx, t, face->side ? p->shift_b : p->shift_a);
+  f.xi = toi_pose (p->world, face->side ? p->k->a : p->k->b, I, p->ctx, t, face->side ? p->shift_a : p->shift_b);
+  f.vr = v2_mad (R->v, t, face->side ? gb : ga);
+  f.vi = v2_mad (I->v, t, face->side ? ga : gb);
+  f.wr = R->w, f.wi = I->w;
+  f.n = rot2_apply (f.xr.q, face->ref->normals[face->edge]);
+  f.at = v2_dot (f.n, v2_add (f.xr.p, rot2_apply (f.xr.q, face->ref->vertices[face->edge])));
+  return f;
+}
+
+/* Incident vertex j's gap beyond the face line, and its rate (the
+ * relative velocity of the two material points there along the face's
+ * normal); *arm its arm r, *offset its offset u from R's centre. */
+static double face_gap (const face_frame *f, int32_t j, double *rate, vec2 *arm, vec2 *offset)
+{
+  vec2 r = rot2_apply (f->xi.q, f->face->inc->vertices[j]), x = v2_add (f->xi.p, r), u = v2_sub (x, f->xr.p);
+  *rate = v2_dot (f->n, v2_sub (v2_add (f->vi, v2_scale (v2_perp (r), f->wi)), v2_add (f->vr, v2_scale (v2_perp (u), f->wr))));
+  *arm = r, *offset = u;
+  return v2_dot (f->n, x) - f->at;
+}
+
+/* How long after t two polygon pieces cannot touch, measured on the face
+ * `face` of the reference piece (R, the body it belongs to) turning with
+ * it, not held fixed in the world: while every vertex of the incident
+ * piece (I) lies beyond the line of that face, the pieces are apart (both
+ * convex). In R's frame a vertex of I sits at y = R^T u, u its offset from
+ * R's centre in the world, and y'' = R^T (u'' - 2 w_R J u' - w_R^2 u) with
+ * u' = v_I - v_R + w_I J r (r: the vertex's arm on I) and u'' = g_I - g_R -
+ * w_I^2 r. So its gap beyond the face line closes at its rate now (the
+ * material points' relative velocity along the face normal) less at most
+ * C t^2 / 2, C = |g_I - g_R| + w_I^2 |r| + 2 |w_R| (|v_I - v_R| + |w_I| |r|)
+ * + w_R^2 |u|, with |v_I - v_R| and |u| bounded over the rest of the step.
+ * The fixed-axis bounds (closing_time, reach_time) take a turning face's
+ * far end as closing on the other piece; here it does not move, so a pair
+ * just apart after an impact, leaving slowly as it spins, is not crept
+ * away from by tiny advances. The first vertex's root, or INFINITY. */
+static double face_time (const toi_pair *p, const contact_face *face, double t, double t_max, vec2 ga, vec2 gb)
+{
+  face_frame f = face_at (p, face, t, ga, gb);
+  double span = t_max - t, dg = v2_len (v2_sub (face->side ? ga : gb, face->side ? gb : ga));
+  double dv = v2_len (v2_sub (f.vi, f.vr)) + dg * span, wr = fabs (f.wr), wi = fabs (f.wi), first = INFINITY;
+  int32_t j;
+  for (j = 0; j < face->inc->count; ++j)
+    {
+      vec2 r, u;
+      double rate, gap = face_gap (&f, j, &rate, &r, &u), lr = v2_len (r), moving = dv + wi * lr;
+      double curve = dg + wi * wi * lr + 2.0 * wr * moving + wr * wr * (v2_len (u) + moving * span), tau;
+      if (!(gap > 0.0))
+        return 0.0;
+      tau = contact_gap_root (gap, rate, curve);
+      first = tau < first ? tau : first;
+    }
+  return first;
 }
 
 /* The touch within [lo, hi], apart at lo (slo > tol) along the axis
@@ -199,6 +278,7 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
   vec2 ga = a->moves == MOVES_DYNAMIC ? ctx->gravity : v2 (0.0, 0.0);
   vec2 gb = b->moves == MOVES_DYNAMIC ? ctx->gravity : v2 (0.0, 0.0);
   vec2 v = v2_sub (b->v, a->v), g = v2_sub (gb, ga), n, ignored;
+  contact_face face;
   double reach_a = A->shape.bound_radius, reach_b = B->shape.bound_radius;
   double turn = fabs (a->w) * reach_a + fabs (b->w) * reach_b;
   double t = t_from, s = 0.0;
@@ -227,18 +307,18 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
     double span = t_max - t, meet, s0 = 0.0, t0 = t;
     /* a search again after an impact (t_from > 0) most often finds the
      * pieces still touching: that first */
-    if (t_from > 0.0 && !((s = s0 = separation_axis (&p, t, &n)) > p.tol))
+    if (t_from > 0.0 && !((s = s0 = separation_face (&p, t, &n, &face)) > p.tol))
       return TOI_UNKNOWN;
     meet = circles_meet (v2_sub (xb.p, xa.p), vt, reach_a + reach_b + 0.5 * v2_len (g) * span * span, span);
     if (meet < 0.0 || fixed_axis_apart (&p, xa, xb, k->points[0].normal, vt, g, span))
       return TOI_APART;
-    if (t_from == 0.0 && !((s = s0 = separation_axis (&p, t, &n)) > p.tol))
+    if (t_from == 0.0 && !((s = s0 = separation_face (&p, t, &n, &face)) > p.tol))
       return TOI_UNKNOWN;
     *axis = n;
     if (meet > 0.0)
       {
         t += meet;
-        s = separation_axis (&p, t, &n);
+        s = separation_face (&p, t, &n, &face);
         if (s <= 0.0)
           return bracketed (&p, t0, s0, t, s, axis);
         if (s <= p.tol)
@@ -248,11 +328,20 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
   }
   for (i = 0; i < advances; ++i)
     {
-      double first = closing_time (s, n, v2_mad (v, t, g), g, turn), second = reach_time (&p, t, n, ga, gb), sn;
-      double tn = t + (second > first ? second : first);
+      double first = closing_time (s, n, v2_mad (v, t, g), g, turn), sn, tn, second;
+      /* the face's own bound first: past the step, no other is needed */
+      if (face.ref)
+        {
+          double third = face_time (&p, &face, t, t_max, ga, gb);
+          first = third > first ? third : first;
+          if (!(t + first < t_max))
+            return TOI_APART;
+        }
+      second = reach_time (&p, t, n, ga, gb);
+      tn = t + (second > first ? second : first);
       if (!(tn < t_max))
         return TOI_APART; /* it cannot close the gap by then */
-      sn = separation_axis (&p, tn, &n);
+      sn = separation_face (&p, tn, &n, &face);
       if (sn <= 0.0)
         return bracketed (&p, t, s, tn, sn, axis);
       if (sn <= p.tol)
