@@ -39,6 +39,10 @@ int32_t collide_polygon_circle (const convex_piece *a, xform xa, vec2 cb, double
  * between the two pieces' projections on that edge normal, *axis, turned to
  * point from a towards b. */
 double polygons_separation (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis);
+/* The reference face a point of collide_polygons_sat's manifold was
+ * clipped to, from its feature: edge *edge of a (*side 0) or of b (*side 1);
+ * 0 for a corner's point, which has none. */
+int sat_feature_face (uint32_t feature, int *side, int32_t *edge);
 /* The same, and the face whose normal that is: edge e of a as e, edge e of
  * b as -1 - e. */
 double polygons_separation_face (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis,

@@ -182,6 +182,15 @@ typedef struct clip_vertex {
   uint32_t id;
 } clip_vertex;
 
+int sat_feature_face (uint32_t feature, int *side, int32_t *edge)
+{
+  if ((feature & CORNER_FEATURE) == CORNER_FEATURE)
+    return 0;
+  *side = (int) (feature >> 31);
+  *edge = (int32_t) ((feature >> 16) & 0x7fffu);
+  return 1;
+}
+
 /* Keep the part of segment `in` where dot(n, x) <= offset (Sutherland-Hodgman
  * on one plane). Returns the number of points kept (0 to 2). A vertex within
  * `tol` of the plane counts as on it and keeps its own id: boxes of equal

@@ -7,6 +7,7 @@
 #include "seams.h"
 #include "solver.h"
 #include "step.h"
+#include "toi.h"
 #include "world.h"
 
 void contacts_init (carom_world *world)
@@ -23,6 +24,7 @@ void contacts_destroy (carom_world *world)
   mem_free (&world->allocator, c->old_pool, (size_t) c->old_pool_cap * sizeof (contact_point));
   mem_free (&world->allocator, c->table, (size_t) c->table_cap * sizeof (int32_t));
   mem_free (&world->allocator, c->sensors, (size_t) c->sensor_cap * sizeof (int32_t));
+  mem_free (&world->allocator, c->pushed, (size_t) c->pushed_cap);
   memset (c, 0, sizeof *c);
 }
 
@@ -112,6 +114,9 @@ typedef struct pair_context {
   double reuse_lin, reuse_ang; /* manifold reuse tolerance (0: never) */
   const convex_piece *pieces_a, *pieces_b; /* a pair with a compound: the
                                               pieces collide_pieces takes */
+  int bouncy_swept;      /* a bouncy pair, its bodies in free flight
+                            (step_context.free_flight), looking as far as
+                            that closes it (detect_pair): clear_of_step */
 } pair_context;
 
 /* Where each point of a freshly computed manifold lies, in a's frame: a's
@@ -165,7 +170,8 @@ static int reuse_manifold (const contact *old, xform xa, xform xb, double tol_li
 }
 
 static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, const manifold *m,
-                          const pair_context *pc, int32_t old, const contact *reused_from, xform xa, xform xb)
+                          const pair_context *pc, int32_t old, const contact *reused_from, xform xa, xform xb,
+                          int clear)
 {
   contacts *c = &world->contacts;
   contact *k;
@@ -193,6 +199,8 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
   k->count = m->count;
   k->fresh = old < 0;
   k->gap = m->gap;
+  k->clear = clear;
+  c->clear_count += clear;
   k->first_point = c->point_count;
   c->point_count += m->count;
   for (i = 0; i < m->count; ++i)
@@ -342,6 +350,42 @@ static double piece_reach_along (const body *B, int32_t piece, rot2 q, vec2 d, d
   return best;
 }
 
+/* Whether two polygon pieces whose manifold m was just found, apart by
+ * more than the slop, cannot touch within the step in free flight, judged
+ * on the reference face m was clipped to as it turns with its body
+ * (toi_face_clear). A bouncy pair looks ahead as far as free flight closes
+ * it (detect_pair); by the bodies' whole relative speed, in any direction,
+ * that takes in neighbours flying alongside or apart, each then a contact
+ * whose time of impact is searched every step for nothing. What an impact
+ * within the step sends at them is found again after the impacts
+ * (contacts_after_impacts). */
+static int clear_of_step (const carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb,
+                          const pair_context *pc, xform xa, xform xb, const manifold *m)
+{
+  const body *A = &world->bodies[a], *B = &world->bodies[b], *R, *I;
+  const convex_piece *P, *Q, *ref;
+  double s = INFINITY;
+  int32_t edge, j;
+  int side;
+  if (pa < 0 || pb < 0 || !sat_feature_face (m->points[0].feature, &side, &edge))
+    return 0;
+  P = pc->pieces_a ? &pc->pieces_a[pa] : A->shape.kind == CAROM_SHAPE_POLYGON ? &A->shape.pieces[pa] : NULL;
+  Q = pc->pieces_b ? &pc->pieces_b[pb] : B->shape.kind == CAROM_SHAPE_POLYGON ? &B->shape.pieces[pb] : NULL;
+  if (!P || !Q || P->count == 0 || Q->count == 0)
+    return 0;
+  ref = side ? Q : P;
+  if (edge >= ref->count)
+    return 0;
+  for (j = 0; j < m->count; ++j)
+    s = -m->points[j].depth < s ? -m->points[j].depth : s;
+  if (!(s > pc->slop))
+    return 0;
+  R = side ? B : A, I = side ? A : B;
+  return toi_face_clear (ref, edge, side ? xb : xa, R->v, R->w, side ? P : Q, side ? xa : xb, I->v, I->w, 0.0,
+                         world->contacts.dt)
+         >= world->contacts.dt;
+}
+
 /* The narrow phase for one pair of pieces, or last step's points moved
  * (reuse_manifold), then the contact. */
 static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, const pair_context *pc,
@@ -350,6 +394,7 @@ static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, i
   contacts *c = &world->contacts;
   int32_t old = find_old (world, a, b, pa, pb);
   const contact *from = NULL;
+  int clear = 0;
   if (can_reuse && old >= 0 && reuse_manifold (&c->old[old], xa, xb, pc->reuse_lin, pc->reuse_ang, m))
     from = &c->old[old];
   else
@@ -359,9 +404,12 @@ static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, i
      * would land it deep. Few pairs are in contact at a time, and a
      * resting speculative point costs the solver little; a bouncy one
      * would take the time of impact's work for every corner nearby. */
-    narrow_phase (world, a, b, pa, pb, pc->pieces_a, pc->pieces_b, xa, xb,
-                  old >= 0 && pc->restitution == 0.0 ? pc->margin_kept : pc->margin, NULL, m);
-  add_manifold (world, a, b, pa, pb, m, pc, old, from, xa, xb);
+    {
+      narrow_phase (world, a, b, pa, pb, pc->pieces_a, pc->pieces_b, xa, xb,
+                    old >= 0 && pc->restitution == 0.0 ? pc->margin_kept : pc->margin, NULL, m);
+      clear = pc->bouncy_swept && m->count > 0 && clear_of_step (world, a, b, pa, pb, pc, xa, xb, m);
+    }
+  add_manifold (world, a, b, pa, pb, m, pc, old, from, xa, xb, clear);
 }
 
 void contact_collide_at (const carom_world *world, const contact *k, xform xa, xform xb, double margin,
@@ -719,6 +767,7 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
   else
     pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], 0)
                 + body_reach_capped (B, world->broad.reach[b], 0);
+  pc.bouncy_swept = ctx->free_flight && reach < 0.0 && swept && pc.restitution > 0.0;
   pc.margin_kept = reach >= 0.0 ? pc.margin : pc.slop + world->broad.reach[a] + world->broad.reach[b];
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
@@ -912,12 +961,72 @@ void contacts_point_again (carom_world *world)
   point_contacts (&world->contacts);
 }
 
+/* Drop the contacts found clear of the step (clear_of_step) whose dynamic
+ * bodies nothing but an impact can push within it: no other contact of
+ * theirs is within the slop, and they have no joint. Free flight, which
+ * the verdict assumed, is then theirs until an impact, after which
+ * contacts_after_impacts looks again. A body resting on, or pressed by,
+ * another (a box rocking on the ground, the corner that is not down yet
+ * coming down faster than free flight says) keeps every contact. The rest
+ * keep their order, and their points stay in a row. */
+static void drop_clear (carom_world *world)
+{
+  contacts *c = &world->contacts;
+  unsigned char *pushed = c->pushed;
+  int32_t i, j, end, n = 0, points = 0;
+  for (i = 0; i < world->slot_count; ++i)
+    pushed[i] = world->bodies[i].alive && world->bodies[i].joint_count > 0;
+  for (i = 0; i < c->count; ++i)
+    {
+      const contact *k = &c->list[i];
+      if (k->clear)
+        continue;
+      for (j = 0; j < k->count; ++j)
+        if (c->pool[k->first_point + j].depth >= -k->slop)
+          {
+            pushed[k->a] = pushed[k->b] = 1;
+            break;
+          }
+    }
+  /* a pair's contacts (of several pieces) lie in a row; they go together
+   * or not at all (contacts_after_impacts takes a pair with any contact
+   * as found) */
+  for (i = 0; i < c->count; i = end)
+    {
+      const contact *k = &c->list[i];
+      const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
+      int drop = !(A->type == CAROM_DYNAMIC && pushed[k->a]) && !(B->type == CAROM_DYNAMIC && pushed[k->b]);
+      for (end = i; end < c->count && c->list[end].a == k->a && c->list[end].b == k->b; ++end)
+        drop &= c->list[end].clear;
+      for (j = i; j < end; ++j)
+        {
+          contact *q = &c->list[j];
+          if (drop)
+            {
+              c->bouncy_found -= q->restitution > 0.0;
+              continue;
+            }
+          if (points != q->first_point)
+            memmove (&c->pool[points], &c->pool[q->first_point], (size_t) q->count * sizeof (contact_point));
+          q->first_point = points;
+          points += q->count;
+          if (n != j)
+            c->list[n] = *q;
+          ++n;
+        }
+    }
+  c->count = n;
+  c->point_count = points;
+}
+
 carom_status contacts_update (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
   contact *t = c->old;
   contact_point *tp = c->old_pool;
   int32_t tcap = c->old_cap, tpcap = c->old_pool_cap;
+  if (!mem_reserve (&world->allocator, (void **) &c->pushed, &c->pushed_cap, world->slot_count, 1))
+    return CAROM_ERR_OUT_OF_MEMORY;
   /* last step's contacts become `old`; this step fills the other buffer */
   c->old = c->list, c->old_count = c->count, c->old_cap = c->cap;
   c->list = t, c->cap = tcap, c->count = 0;
@@ -927,6 +1036,8 @@ carom_status contacts_update (carom_world *world, const step_context *ctx)
   c->bouncy_found = 0;
   c->room_count = c->room_points = 0;
   c->sensor_count = 0;
+  c->clear_count = 0;
+  c->dt = ctx->dt;
   c->out_of_memory = 0;
   c->cursor = 0;
   c->table_built = 0;
@@ -937,6 +1048,8 @@ carom_status contacts_update (carom_world *world, const step_context *ctx)
       contacts_undo (world); /* the world is as it was */
       return CAROM_ERR_OUT_OF_MEMORY;
     }
+  if (c->clear_count > 0)
+    drop_clear (world);
   point_contacts (c);
   return CAROM_OK;
 }

@@ -90,6 +90,9 @@ typedef struct contact {
                                  and no point's separation) */
   int32_t kept;               /* kept as it was before the step's impacts
                                  changed it (impact.c, impact_keep) */
+  int32_t clear;              /* at detection: its pieces cannot touch
+                                 within the step in free flight (contact.c,
+                                 clear_of_step) */
 } contact;
 
 typedef struct contacts {
@@ -124,6 +127,12 @@ typedef struct contacts {
                             slots, the sensor first (events.c tests their
                             overlap at the end of the update) */
   int32_t sensor_count, sensor_cap; /* pairs, and room in int32_t */
+  int32_t clear_count;   /* contacts the detection found clear */
+  double dt;             /* the step the detection looked ahead over */
+  unsigned char *pushed; /* per slot: a dynamic body something other than
+                            an impact may push within the step (a contact
+                            within the slop, a joint): drop_clear */
+  int32_t pushed_cap;
   int out_of_memory;
 } contacts;
 

@@ -25,6 +25,7 @@ void step_context_init (step_context *ctx, const carom_world *world, double dt)
   ctx->accel = v2_len (world->gravity);
   ctx->continuous = world->continuous;
   ctx->damping = world->damping_linear > 0.0 || world->damping_angular > 0.0;
+  ctx->free_flight = ctx->accel == 0.0 && !world->central.active && !world->forces_active && !ctx->damping;
   ctx->damp_v = ctx->damping ? exp (-world->damping_linear * ctx->h) : 1.0;
   ctx->damp_w = ctx->damping ? exp (-world->damping_angular * ctx->h) : 1.0;
   ctx->restitution_threshold = RESTITUTION_THRESHOLD_STEPS * ctx->accel * dt;

@@ -26,6 +26,9 @@ typedef struct step_context {
   int continuous;        /* the world's continuous collision: contacts are
                             looked for as far as bodies can travel in dt */
   int damping;           /* damping is on: v *= damp_v, w *= damp_w per sub-step */
+  int free_flight;       /* bodies fly free between their contacts' and
+                            joints' impulses: no gravity, uniform or
+                            central, no force, no damping */
   double damp_v, damp_w;
   /* contacts: below this approach speed a contact does not bounce (what
    * gravity adds in two steps, so resting stays resting; 0 without

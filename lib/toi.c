@@ -83,40 +83,6 @@ static double separation_face (const toi_pair *p, double t, vec2 *axis, contact_
                                      toi_pose (p->world, p->k->b, p->b, p->ctx, t, p->shift_b), axis, face);
 }
 
-/* A face of a polygon piece and the two bodies at time t (face_time). */
-typedef struct face_frame {
-  const contact_face *face;
-  xform xr, xi;     /* the reference and incident bodies' poses at t */
-  vec2 vr, vi, n;   /* their velocities at t, the face's normal */
-  double at, wr, wi; /* the face line's offset along n; their spins */
-} face_frame;
-
-static face_frame face_at (const toi_pair *p, const contact_face *face, double t, vec2 ga, vec2 gb)
-{
-  const solver_body *R = face->side ? p->b : p->a, *I = face->side ? p->a : p->b;
-  face_frame f;
-  f.face = face;
-  f.xr = toi_pose (p->world, face->side ? p->k->b : p->k->a, R, p->ctx, t, face->side ? p->shift_b : p->shift_a);
-  f.xi = toi_pose (p->world, face->side ? p->k->a : p->k->b, I, p->ctx, t, face->side ? p->shift_a : p->shift_b);
-  f.vr = v2_mad (R->v, t, face->side ? gb : ga);
-  f.vi = v2_mad (I->v, t, face->side ? ga : gb);
-  f.wr = R->w, f.wi = I->w;
-  f.n = rot2_apply (f.xr.q, face->ref->normals[face->edge]);
-  f.at = v2_dot (f.n, v2_add (f.xr.p, rot2_apply (f.xr.q, face->ref->vertices[face->edge])));
-  return f;
-}
-
-/* Incident vertex j's gap beyond the face line, and its rate (the
- * relative velocity of the two material points there along the face's
- * normal); *arm its arm r, *offset its offset u from R's centre. */
-static double face_gap (const face_frame *f, int32_t j, double *rate, vec2 *arm, vec2 *offset)
-{
-  vec2 r = rot2_apply (f->xi.q, f->face->inc->vertices[j]), x = v2_add (f->xi.p, r), u = v2_sub (x, f->xr.p);
-  *rate = v2_dot (f->n, v2_sub (v2_add (f->vi, v2_scale (v2_perp (r), f->wi)), v2_add (f->vr, v2_scale (v2_perp (u), f->wr))));
-  *arm = r, *offset = u;
-  return v2_dot (f->n, x) - f->at;
-}
-
 /* How long after t two polygon pieces cannot touch, measured on the face
  * `face` of the reference piece (R, the body it belongs to) turning with
  * it, not held fixed in the world: while every vertex of the incident
@@ -132,23 +98,35 @@ static double face_gap (const face_frame *f, int32_t j, double *rate, vec2 *arm,
  * far end as closing on the other piece; here it does not move, so a pair
  * just apart after an impact, leaving slowly as it spins, is not crept
  * away from by tiny advances. The first vertex's root, or INFINITY. */
-static double face_time (const toi_pair *p, const contact_face *face, double t, double t_max, vec2 ga, vec2 gb)
+double toi_face_clear (const convex_piece *ref, int32_t edge, xform xr, vec2 vr, double wr, const convex_piece *inc,
+                       xform xi, vec2 vi, double wi, double dg, double span)
 {
-  face_frame f = face_at (p, face, t, ga, gb);
-  double span = t_max - t, dg = v2_len (v2_sub (face->side ? ga : gb, face->side ? gb : ga));
-  double dv = v2_len (v2_sub (f.vi, f.vr)) + dg * span, wr = fabs (f.wr), wi = fabs (f.wi), first = INFINITY;
+  vec2 n = rot2_apply (xr.q, ref->normals[edge]);
+  double at = v2_dot (n, v2_add (xr.p, rot2_apply (xr.q, ref->vertices[edge])));
+  double dv = v2_len (v2_sub (vi, vr)) + dg * span, awr = fabs (wr), awi = fabs (wi), first = INFINITY;
   int32_t j;
-  for (j = 0; j < face->inc->count; ++j)
+  for (j = 0; j < inc->count; ++j)
     {
-      vec2 r, u;
-      double rate, gap = face_gap (&f, j, &rate, &r, &u), lr = v2_len (r), moving = dv + wi * lr;
-      double curve = dg + wi * wi * lr + 2.0 * wr * moving + wr * wr * (v2_len (u) + moving * span), tau;
+      vec2 r = rot2_apply (xi.q, inc->vertices[j]), x = v2_add (xi.p, r), u = v2_sub (x, xr.p);
+      double gap = v2_dot (n, x) - at, lr = v2_len (r), moving = dv + awi * lr, tau;
+      double rate = v2_dot (n, v2_sub (v2_add (vi, v2_scale (v2_perp (r), wi)), v2_add (vr, v2_scale (v2_perp (u), wr))));
+      double curve = dg + awi * awi * lr + 2.0 * awr * moving + awr * awr * (v2_len (u) + moving * span);
       if (!(gap > 0.0))
         return 0.0;
       tau = contact_gap_root (gap, rate, curve);
       first = tau < first ? tau : first;
     }
   return first;
+}
+
+static double face_time (const toi_pair *p, const contact_face *face, double t, double t_max, vec2 ga, vec2 gb)
+{
+  const solver_body *R = face->side ? p->b : p->a, *I = face->side ? p->a : p->b;
+  vec2 gr = face->side ? gb : ga, gi = face->side ? ga : gb;
+  xform xr = toi_pose (p->world, face->side ? p->k->b : p->k->a, R, p->ctx, t, face->side ? p->shift_b : p->shift_a);
+  xform xi = toi_pose (p->world, face->side ? p->k->a : p->k->b, I, p->ctx, t, face->side ? p->shift_a : p->shift_b);
+  return toi_face_clear (face->ref, face->edge, xr, v2_mad (R->v, t, gr), R->w, face->inc, xi, v2_mad (I->v, t, gi),
+                         I->w, v2_len (v2_sub (gi, gr)), t_max - t);
 }
 
 /* The touch within [lo, hi], apart at lo (slo > tol) along the axis

@@ -30,6 +30,16 @@ xform toi_pose (const struct carom_world *world, int32_t i, const solver_body *s
  * before it that found them clearly apart (contact_separation_at): the face
  * they closed on, where at the touch two faces may both be at 0 (corner to
  * corner). */
+/* How long from now two polygon pieces cannot touch in free flight, judged
+ * on edge `edge` of the reference piece `ref` (its body at xr, moving at
+ * vr, spinning at wr) turning with its body: the first time a vertex of
+ * `inc` (its body at xi, vi, wi) could reach that edge's line, or INFINITY
+ * when none can within `span`; 0 when one is not beyond it now. dg bounds
+ * the two bodies' relative acceleration (gravity). lib/toi.c, face_time,
+ * has the bound. */
+double toi_face_clear (const convex_piece *ref, int32_t edge, xform xr, vec2 vr, double wr, const convex_piece *inc,
+                       xform xi, vec2 vi, double wi, double dg, double span);
+
 /* Touching: a separation below this fraction of the pair's slop (near the
  * rounding of the coordinates). */
 #define TOI_TOUCH 1e-12

@@ -1138,6 +1138,58 @@ static double elastic_gas_deepest (double spin, int run, double *energy, double 
   return deepest / smallest;
 }
 
+/* Two unit boxes side by side, 5 cm apart, e = 1, no gravity, continuous
+ * collision on, B given velocity (bvx, bvy), A (0, 5) m/s; with `third`, a
+ * box resting against A's far side (a contact within the slop), with
+ * `damping`, the world's damping on. The contact points of A and B listed
+ * after one step. */
+static int32_t side_by_side_contacts (double bvx, double bvy, int third, int damping)
+{
+  carom_world *w = world_with (0.0, 0.0, 1.0, 0.0);
+  carom_body_id a = add_box (w, CAROM_DYNAMIC, 0.0, 0.0, 0.0, 1.0, 1.0);
+  carom_body_id b = add_box (w, CAROM_DYNAMIC, 1.05, 0.0, 0.0, 1.0, 1.0);
+  int32_t n = 0, i;
+  assert_status (carom_world_set_continuous (w, 1), CAROM_OK);
+  assert_status (carom_body_set_velocity (w, a, 0.0, 5.0), CAROM_OK);
+  assert_status (carom_body_set_velocity (w, b, bvx, bvy), CAROM_OK);
+  if (third)
+    {
+      carom_body_id c = add_box (w, CAROM_DYNAMIC, -1.0, 0.0, 0.0, 1.0, 1.0);
+      assert_status (carom_body_set_velocity (w, c, 0.0, 5.0), CAROM_OK);
+    }
+  if (damping)
+    assert_status (carom_world_set_damping (w, 0.1, 0.1), CAROM_OK);
+  assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK);
+  for (i = 0; i < carom_world_contact_count (w); ++i)
+    {
+      carom_body_id p, q;
+      assert_status (carom_world_get_contact (w, i, &p, &q, NULL, NULL, NULL, NULL, NULL), CAROM_OK);
+      n += (p == a && q == b) || (p == b && q == a);
+    }
+  carom_world_destroy (w);
+  return n;
+}
+
+/* With continuous collision a bouncy pair looks ahead as far as free
+ * flight can close it, in any direction (contact.c, detect_pair); where
+ * the bodies fly free (no gravity, force or damping), a pair whose free
+ * flight cannot close its gap within the step, judged on its reference
+ * face as it turns (clear_of_step), has no contact, unless a body of it
+ * touches another or has a joint, and so can be pushed by more than an
+ * impact. B leaving A at 3 m/s, or sliding by at 5 m/s (either within
+ * the look-ahead of the relative speed): no contact; B closing at 5 m/s
+ * on the 5 cm gap: one; sliding by but A pressed by a third box, or
+ * damped: the contact stays. */
+static void test_free_flight_lists_no_contact_that_cannot_touch (void **state)
+{
+  (void) state;
+  assert_int_equal (side_by_side_contacts (3.0, 5.0, 0, 0), 0);  /* leaving at 3 m/s */
+  assert_int_equal (side_by_side_contacts (0.0, 10.0, 0, 0), 0); /* sliding by at 5 m/s */
+  assert_true (side_by_side_contacts (-5.0, 5.0, 0, 0) >= 1);
+  assert_true (side_by_side_contacts (0.0, 10.0, 1, 0) >= 1);
+  assert_true (side_by_side_contacts (0.0, 10.0, 0, 1) >= 1);
+}
+
 static void test_elastic_gas_with_continuous_collision_keeps_its_energy (void **state)
 {
   static const double spins[] = { 0.0, 40.0 }, bounds[] = { 0.01, 0.05 };
@@ -1733,6 +1785,7 @@ int main (void)
     cmocka_unit_test (test_spinning_bar_leaves_a_wall_as_the_closed_form),
     cmocka_unit_test (test_impact_friction_is_coulombs),
     cmocka_unit_test (test_elastic_gas_with_continuous_collision_keeps_its_energy),
+    cmocka_unit_test (test_free_flight_lists_no_contact_that_cannot_touch),
     cmocka_unit_test (test_pair_meets_by_its_gap_not_its_clipped_point),
     cmocka_unit_test (test_corners_meeting_bounce_off_the_separating_axis),
     cmocka_unit_test (test_polygon_pairs_thrown_at_each_other_never_overlap),
