@@ -70,6 +70,49 @@ static void solver_copy (const carom_world *w, int32_t slot, solver_body *sb)
   sb->moves = B->type == CAROM_DYNAMIC ? MOVES_DYNAMIC : MOVES_NOT;
 }
 
+/* The first of SAMPLES times through the step at which the pieces overlap
+ * by more than DEEP, or INFINITY. */
+static double first_overlap (const carom_world *w, const contact *k, const solver_body *a, const solver_body *b,
+                             const step_context *ctx)
+{
+  int j;
+  for (j = 1; j <= SAMPLES; ++j)
+    {
+      double ts = T_MAX * j / SAMPLES;
+      if (separation_at (w, k, a, b, ctx, ts) < -DEEP)
+        return ts;
+    }
+  return INFINITY;
+}
+
+/* toi_first_touch from the start of the step, against the dense sampling's
+ * first overlap: "apart" only when none was seen, a touch never after it
+ * and with the pieces touching then; counted in *hits, *apart, *unknown. */
+static void judge_search (const carom_world *w, const contact *k, const solver_body *a, const solver_body *b,
+                          const step_context *ctx, int n, double first, int *hits, int *apart, int *unknown)
+{
+  double t = toi_first_touch (w, k, a, b, ctx, 0.0, T_MAX, NULL, NULL);
+  if (t == TOI_APART)
+    {
+      if (first < INFINITY)
+        fail_msg ("case %d: apart, but they overlap at t = %.9g", n, first);
+      ++*apart;
+    }
+  else if (t == TOI_UNKNOWN)
+    ++*unknown;
+  else
+    {
+      double s = separation_at (w, k, a, b, ctx, t);
+      if (!(t > 0.0 && t <= T_MAX))
+        fail_msg ("case %d: time of impact %.17g outside the step", n, t);
+      if (!(t <= first))
+        fail_msg ("case %d: time of impact %.17g after an overlap at %.17g", n, t, first);
+      if (!(fabs (s) <= 1e-9))
+        fail_msg ("case %d: separation %.3g at the time of impact", n, s);
+      ++*hits;
+    }
+}
+
 static void toi_matches_dense_sampling (void **state)
 {
   rng r = { 0x746f6921ULL };
@@ -82,13 +125,12 @@ static void toi_matches_dense_sampling (void **state)
       int ka = (int) uniform (&r, 1.0, 7.0), kb = (int) uniform (&r, 0.0, 7.0);
       carom_body_id ia = add_random (w, &r, ka, moving_a ? CAROM_DYNAMIC : CAROM_STATIC, 0.0, 0.0,
                                      uniform (&r, -M_PI, M_PI));
-      double dir = uniform (&r, -M_PI, M_PI), reach, speed, t, first = INFINITY;
+      double dir = uniform (&r, -M_PI, M_PI), reach, speed, first;
       carom_body_id ib;
       contact k;
       contact_point point;
       solver_body a, b;
       step_context ctx;
-      int j;
       /* B at a random direction, its bounding circle just clear of A's to
        * well apart, flying back at A (more or less) and spinning */
       reach = w->bodies[slot_of (ia)].shape.bound_radius;
@@ -121,15 +163,7 @@ static void toi_matches_dense_sampling (void **state)
           carom_world_destroy (w);
           continue; /* touching already: not a question for the search */
         }
-      for (j = 1; j <= SAMPLES; ++j)
-        {
-          double ts = T_MAX * j / SAMPLES;
-          if (separation_at (w, &k, &a, &b, &ctx, ts) < -DEEP)
-            {
-              first = ts;
-              break;
-            }
-        }
+      first = first_overlap (w, &k, &a, &b, &ctx);
       {
         /* the turning-face bound alone, from the face of the separation */
         contact_face face;
@@ -151,26 +185,7 @@ static void toi_matches_dense_sampling (void **state)
               }
           }
       }
-      t = toi_first_touch (w, &k, &a, &b, &ctx, 0.0, T_MAX, NULL, NULL);
-      if (t == TOI_APART)
-        {
-          if (first < INFINITY)
-            fail_msg ("case %d: apart, but they overlap at t = %.9g", n, first);
-          ++apart;
-        }
-      else if (t == TOI_UNKNOWN)
-        ++unknown;
-      else
-        {
-          double s = separation_at (w, &k, &a, &b, &ctx, t);
-          if (!(t > 0.0 && t <= T_MAX))
-            fail_msg ("case %d: time of impact %.17g outside the step", n, t);
-          if (!(t <= first))
-            fail_msg ("case %d: time of impact %.17g after an overlap at %.17g", n, t, first);
-          if (!(fabs (s) <= 1e-9))
-            fail_msg ("case %d: separation %.3g at the time of impact", n, s);
-          ++hits;
-        }
+      judge_search (w, &k, &a, &b, &ctx, n, first, &hits, &apart, &unknown);
       carom_world_destroy (w);
     }
   /* the cases are of both kinds, and the search settles nearly all */
@@ -250,7 +265,7 @@ static void toi_after_a_grazing_departure (void **state)
       const body *A = &w->bodies[slot_of (ia)], *B = &w->bodies[slot_of (ib)];
       const convex_piece *pa = &A->shape.pieces[0], *pb = &B->shape.pieces[0];
       double gap = pow (10.0, uniform (&r, -10.0, -4.0)), leave = uniform (&r, 0.0, 0.5);
-      double slide = uniform (&r, -5.0, 5.0), deepest = INFINITY, t, first = INFINITY;
+      double slide = uniform (&r, -5.0, 5.0), deepest = INFINITY, first;
       vec2 nrm, at, corner = v2 (0.0, 0.0);
       contact k;
       contact_point point;
@@ -291,35 +306,8 @@ static void toi_after_a_grazing_departure (void **state)
           carom_world_destroy (w);
           continue;
         }
-      for (j = 1; j <= SAMPLES; ++j)
-        {
-          double ts = T_MAX * j / SAMPLES;
-          if (separation_at (w, &k, &a, &b, &ctx, ts) < -DEEP)
-            {
-              first = ts;
-              break;
-            }
-        }
-      t = toi_first_touch (w, &k, &a, &b, &ctx, 0.0, T_MAX, NULL, NULL);
-      if (t == TOI_APART)
-        {
-          if (first < INFINITY)
-            fail_msg ("case %d: apart, but they overlap at t = %.9g", n, first);
-          ++apart;
-        }
-      else if (t == TOI_UNKNOWN)
-        ++unknown;
-      else
-        {
-          double s = separation_at (w, &k, &a, &b, &ctx, t);
-          if (!(t > 0.0 && t <= T_MAX))
-            fail_msg ("case %d: time of impact %.17g outside the step", n, t);
-          if (!(t <= first))
-            fail_msg ("case %d: time of impact %.17g after an overlap at %.17g", n, t, first);
-          if (!(fabs (s) <= 1e-9))
-            fail_msg ("case %d: separation %.3g at the time of impact", n, s);
-          ++hits;
-        }
+      first = first_overlap (w, &k, &a, &b, &ctx);
+      judge_search (w, &k, &a, &b, &ctx, n, first, &hits, &apart, &unknown);
       carom_world_destroy (w);
     }
   printf ("after a grazing departure: %d touches, %d apart, %d unknown\n", hits, apart, unknown);
