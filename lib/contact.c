@@ -965,10 +965,10 @@ void contacts_point_again (carom_world *world)
  * bodies nothing but an impact can push within it: no other contact of
  * theirs is within the slop, and they have no joint. Free flight, which
  * the verdict assumed, is then theirs until an impact, after which
- * contacts_after_impacts looks again. A body resting on, or pressed by,
- * another (a box rocking on the ground, the corner that is not down yet
- * coming down faster than free flight says) keeps every contact. The rest
- * keep their order, and their points stay in a row. */
+ * contacts_after_impacts looks again. A body held by a joint, or pressed
+ * against another (squeezed between two, or pushed out of an overlap),
+ * keeps every contact. The rest keep their order, and their points stay
+ * in a row. */
 static void drop_clear (carom_world *world)
 {
   contacts *c = &world->contacts;

@@ -28,7 +28,10 @@ typedef struct step_context {
   int damping;           /* damping is on: v *= damp_v, w *= damp_w per sub-step */
   int free_flight;       /* bodies fly free between their contacts' and
                             joints' impulses: no gravity, uniform or
-                            central, no force, no damping */
+                            central, no force, no damping (with them a
+                            body that comes to rest on another within
+                            the step is pushed by more than its flight
+                            says: contact.c, clear_of_step) */
   double damp_v, damp_w;
   /* contacts: below this approach speed a contact does not bounce (what
    * gravity adds in two steps, so resting stays resting; 0 without
