@@ -8,7 +8,7 @@
 # compiler may fuse a * b + c into one rounding.
 
 DET_DIR     := $(BUILD)/determinism
-DET_CONFIGS ?= gcc:-O0 gcc:-O2 clang:-O0 clang:-O2
+DET_CONFIGS ?= gcc:-O0 gcc:-O2 gcc:-O3 clang:-O0 clang:-O2 clang:-O3
 
 .PHONY: check-determinism
 

@@ -41,7 +41,7 @@ def header_version(root):
 ROOT = c_root()
 # The library's own flags: C99, no fused multiply-add (the same bits as the
 # Makefile's build, docs/reliability.md), only the carom_* API exported.
-CFLAGS = ["-std=c99", "-O2", "-ffp-contract=off", "-fvisibility=hidden"]
+CFLAGS = ["-std=c99", "-O3", "-ffp-contract=off", "-fvisibility=hidden"]
 
 
 class build_c_library(build_ext):

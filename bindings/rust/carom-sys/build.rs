@@ -97,7 +97,7 @@ fn bundled() {
         .files(&sources)
         .include(root.join("include"))
         .include(root.join("lib"))
-        .opt_level(2)
+        .opt_level(3)
         .warnings(false)
         // the Makefile's: C99, no fused multiply-add (the same bits), only
         // the carom_* API visible
