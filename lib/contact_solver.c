@@ -38,24 +38,79 @@
  * sliver that lands deep in the ground must still come out in a few steps. */
 #define CONTACT_PUSH_PER_STEP 0.05
 
+/* What the set-up of a contact's points reads of its two bodies, loaded
+ * once per contact: nothing in the loop over the points changes it, and the
+ * stores into the points would otherwise make the compiler load it again
+ * for each of them. */
+typedef struct pair_bodies {
+  vec2 pa, pb;                /* the centres of mass */
+  double reach_a, reach_b;    /* twice the bounding radii (lever_arms) */
+  int circle_a, circle_b;
+  double im;                  /* a->im + b->im, the first sum of effective_mass */
+  double ii_a, ii_b;
+  vec2 dv;                    /* b->v - a->v, the first difference of contact_speed */
+  double w_a, w_b;
+} pair_bodies;
+
+static void pair_bodies_load (pair_bodies *pb, const body *ba, const body *bb, const solver_body *a,
+                              const solver_body *b)
+{
+  pb->pa = ba->p;
+  pb->pb = bb->p;
+  pb->reach_a = 2.0 * ba->shape.bound_radius;
+  pb->reach_b = 2.0 * bb->shape.bound_radius;
+  pb->circle_a = ba->shape.kind == CAROM_SHAPE_CIRCLE;
+  pb->circle_b = bb->shape.kind == CAROM_SHAPE_CIRCLE;
+  pb->im = a->im + b->im;
+  pb->ii_a = a->ii;
+  pb->ii_b = b->ii;
+  pb->dv = v2_sub (b->v, a->v);
+  pb->w_a = a->w;
+  pb->w_b = b->w;
+}
+
+/* effective_mass, contact_speed and point_masses on the loaded values:
+ * the same operations in the same order, so the same bits. */
+ALWAYS_INLINE double pair_mass (const pair_bodies *pb, double ra_d, double rb_d)
+{
+  double k = pb->im + pb->ii_a * ra_d * ra_d + pb->ii_b * rb_d * rb_d;
+  return k > 0.0 && isfinite (k) ? 1.0 / k : 0.0;
+}
+
+ALWAYS_INLINE double pair_speed (const pair_bodies *pb, vec2 d, double ra_d, double rb_d)
+{
+  return v2_dot (pb->dv, d) + pb->w_b * rb_d - pb->w_a * ra_d;
+}
+
+ALWAYS_INLINE void pair_point_masses (contact_point *p, const pair_bodies *pb)
+{
+  p->normal_mass = pair_mass (pb, p->rn_a, p->rn_b);
+  p->tangent_mass = pair_mass (pb, p->rt_a, p->rt_b);
+  if (p->normal_mass == 0.0)
+    p->rn_a = p->rn_b = p->normal_impulse = 0.0;
+  if (p->tangent_mass == 0.0)
+    p->rt_a = p->rt_b = p->tangent_impulse = 0.0;
+}
+
 /* Lever arms of a contact point. A lever arm cannot be longer than the body
  * reaches (rounding of far-apart coordinates can make it so for a tiny
  * body); a circle's normal impulse passes through its centre, so r x n is
- * exactly 0 there whatever the rounding of the point says. */
-ALWAYS_INLINE void lever_arms (contact_point *p, const body *ba, const body *bb, vec2 ra, vec2 rb)
+ * exactly 0 there whatever the rounding of the point says (and its
+ * separation arm is 0, separation_arm). */
+ALWAYS_INLINE void lever_arms (contact_point *p, const pair_bodies *pb, vec2 ra, vec2 rb)
 {
   vec2 t = v2_perp (p->normal);
-  double la = 2.0 * ba->shape.bound_radius + fabs (p->depth), lb = 2.0 * bb->shape.bound_radius + fabs (p->depth);
+  double la = pb->reach_a + fabs (p->depth), lb = pb->reach_b + fabs (p->depth);
   if (v2_len2 (ra) > la * la)
     ra = v2_scale (ra, la / v2_len (ra));
   if (v2_len2 (rb) > lb * lb)
     rb = v2_scale (rb, lb / v2_len (rb));
-  p->rn_a = ba->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (ra, p->normal);
-  p->rn_b = bb->shape.kind == CAROM_SHAPE_CIRCLE ? 0.0 : v2_cross (rb, p->normal);
+  p->rn_a = pb->circle_a ? 0.0 : v2_cross (ra, p->normal);
+  p->rn_b = pb->circle_b ? 0.0 : v2_cross (rb, p->normal);
   p->rt_a = v2_cross (ra, t);
   p->rt_b = v2_cross (rb, t);
-  p->ra = separation_arm (ba, ra);
-  p->rb = separation_arm (bb, rb);
+  p->ra = pb->circle_a ? v2 (0.0, 0.0) : ra;
+  p->rb = pb->circle_b ? v2 (0.0, 0.0) : rb;
   p->adjusted = -p->depth - v2_dot (v2_sub (p->rb, p->ra), p->normal);
 }
 
@@ -63,11 +118,11 @@ ALWAYS_INLINE void lever_arms (contact_point *p, const body *ba, const body *bb,
  * speed into the step: its lever arms are those of that moment, both
  * reaching the point where the bodies meet (moved with them), so the impulse
  * turns the bodies as the impact does. */
-static void lever_arms_at_impact (contact_point *p, const body *ba, const body *bb, const solver_body *a,
+static void lever_arms_at_impact (contact_point *p, const pair_bodies *pb, const solver_body *a,
                                   const solver_body *b, double toi)
 {
   vec2 meet = v2_mad (p->point, 0.5 * toi, v2_add (a->v, b->v));
-  lever_arms (p, ba, bb, v2_sub (meet, v2_mad (ba->p, toi, a->v)), v2_sub (meet, v2_mad (bb->p, toi, b->v)));
+  lever_arms (p, pb, v2_sub (meet, v2_mad (pb->pa, toi, a->v)), v2_sub (meet, v2_mad (pb->pb, toi, b->v)));
 }
 
 /* When a point a gap -depth apart, closing at vn < 0, meets under the
@@ -131,13 +186,22 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
 {
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
-  int32_t i, j;
+  /* a body falls 0.5 g h^2 in a sub-step with nothing to hold it: more than
+   * the slop, and one pass cannot keep it resting */
+  const double fall = 0.5 * ctx->accel * ctx->h * ctx->h;
+  const double dt = ctx->dt, threshold = ctx->restitution_threshold;
+  int32_t i, j, bouncy = 0, fine = 0, cold = 0;
   for (i = first; i < c->count; ++i)
     {
       contact *k = &c->list[i];
       const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
       double reach = ba->shape.bound_radius < bb->shape.bound_radius ? ba->shape.bound_radius : bb->shape.bound_radius;
+      double near_depth = -k->slop;
+      /* constrain_bodies' bits of every point, given to both bodies once */
+      int32_t bits = 0;
+      pair_bodies pb;
+      pair_bodies_load (&pb, ba, bb, a, b);
       k->max_push = CONTACT_PUSH_PER_STEP * reach * ctx->inv_dt;
       k->met = 0;
       k->queued = 0;
@@ -146,43 +210,54 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
       k->kept = 0;
       k->event_round = -1;
       k->touch_at = -1.0;
-      c->bouncy_count += k->restitution > 0.0;
-      /* a body falls 0.5 g h^2 in a sub-step with nothing to hold it: more
-       * than the slop, and one pass cannot keep it resting */
-      k->fine = 0.5 * ctx->accel * ctx->h * ctx->h > k->slop;
-      c->fine_count += k->fine;
+      bouncy += k->restitution > 0.0;
+      k->fine = fall > k->slop;
+      fine += k->fine;
       for (j = 0; j < k->count; ++j)
         {
           contact_point *p = &k->points[j];
           double old_nm = p->normal_mass, old_tm = p->tangent_mass, vn;
-          lever_arms (p, ba, bb, v2_sub (p->point, ba->p), v2_sub (p->point, bb->p));
-          point_masses (p, a, b);
-          vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
+          int near, meets;
+          lever_arms (p, &pb, v2_sub (p->point, pb.pa), v2_sub (p->point, pb.pb));
+          pair_point_masses (p, &pb);
+          vn = pair_speed (&pb, p->normal, p->rn_a, p->rn_b);
+          /* before any impulse of the step (see contact_solve) */
+          p->approach = vn;
           p->toi = -1.0;
           if (p->depth < 0.0 && vn < 0.0)
             {
               /* closing: it meets at toi, or is a speculative contact of the
-               * whole step (toi = dt) */
-              p->toi = meeting_time (p->depth, vn, relative_fall (a, b, p->normal, ctx), ctx->dt);
-              lever_arms_at_impact (p, ba, bb, a, b, p->toi);
-              point_masses (p, a, b);
+               * whole step (toi = dt), with the arms of that moment */
+              p->toi = meeting_time (p->depth, vn, relative_fall (a, b, p->normal, ctx), dt);
+              lever_arms_at_impact (p, &pb, a, b, p->toi);
+              pair_point_masses (p, &pb);
+              p->approach = pair_speed (&pb, p->normal, p->rn_a, p->rn_b);
             }
-          constrain_bodies (k, p, a, b, vn, ctx);
+          /* constrain_bodies */
+          near = p->depth >= near_depth;
+          meets = p->toi >= 0.0 && p->toi < dt;
+          if (meets || (near && vn < threshold))
+            bits |= CONSTRAINED_ANY;
+          if (near && vn >= -threshold && vn < threshold)
+            bits |= CONSTRAINED_HELD;
           rescale_warm_start (p, old_nm, old_tm);
           if (k->friction == 0.0)
             p->tangent_impulse = 0.0;
-          /* before any impulse of the step (see contact_solve) */
-          p->approach = contact_speed (a, b, p->normal, p->rn_a, p->rn_b);
           p->after = 0.0;
           p->total_impulse = p->normal_moment = p->impact_moment = 0.0;
-          p->in_impact = p->depth >= -k->slop || (p->toi >= 0.0 && p->toi < ctx->dt);
+          p->in_impact = near || meets;
           p->tangent_total = p->tangent_moment = 0.0;
         }
+      a->constrained |= bits;
+      b->constrained |= bits;
       contact_impact_points (world, k, a, b, ctx);
       pair_matrix (k, a, b);
       k->cold = begins_resting (k, ctx);
-      c->cold_count += k->cold;
+      cold += k->cold;
     }
+  c->bouncy_count += bouncy;
+  c->fine_count += fine;
+  c->cold_count += cold;
 }
 
 /* The same along the tangent (friction). */
