@@ -76,28 +76,40 @@ static double closing_reach (vec2 v, vec2 n, const step_context *ctx)
 static int impact_within_step (const carom_world *world, const contact *k, const solver_body *a,
                                const solver_body *b, const step_context *ctx)
 {
-  const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
-  /* how far the bodies' turning can carry their surfaces in the step */
-  double turn = (fabs (a->w) * ba->shape.bound_radius + fabs (b->w) * bb->shape.bound_radius) * ctx->dt;
+  const body *ba, *bb;
+  double turn;
   int swept = -1; /* contact_pair_swept, asked once it is needed */
-  vec2 v = v2_sub (b->v, a->v);
-  int32_t j, hits = 0;
-  if (k->piece_a < 0 && k->piece_b < 0 && ba->shape.kind == CAROM_SHAPE_POLYGON)
-    return 0; /* the vertex-edge method's whole outlines */
+  vec2 v;
+  int32_t j;
+  /* a point touching, or near and slow, rules the contact out whatever the
+   * others say: checked first, as it rules out most contacts (those
+   * resting) before anything else is computed */
   for (j = 0; j < k->count; ++j)
     {
       const contact_point *p = &k->points[j];
       if (!(p->depth < 0.0) || (p->depth >= -k->slop && !(fabs (p->approach) >= ctx->restitution_threshold)))
         return 0;
-      hits |= p->approach < -ctx->restitution_threshold && p->toi >= 0.0 && p->toi < ctx->dt;
+    }
+  ba = &world->bodies[k->a], bb = &world->bodies[k->b];
+  if (k->piece_a < 0 && k->piece_b < 0 && ba->shape.kind == CAROM_SHAPE_POLYGON)
+    return 0; /* the vertex-edge method's whole outlines */
+  /* how far the bodies' turning can carry their surfaces in the step */
+  turn = (fabs (a->w) * ba->shape.bound_radius + fabs (b->w) * bb->shape.bound_radius) * ctx->dt;
+  v = v2_sub (b->v, a->v);
+  for (j = 0; j < k->count; ++j)
+    {
+      const contact_point *p = &k->points[j];
+      if (p->approach < -ctx->restitution_threshold && p->toi >= 0.0 && p->toi < ctx->dt)
+        return 1;
       /* a fast turn can bring another corner in, which the points' own
        * linear estimate does not see; and the gap that closes is the
        * pieces' (k->gap), which a point clipped to a face can overstate */
       if (swept < 0)
         swept = contact_pair_swept (world, k->a, k->b, ctx);
-      hits |= k->gap < turn + (swept ? closing_reach (v, p->normal, ctx) : 0.0);
+      if (k->gap < turn + (swept ? closing_reach (v, p->normal, ctx) : 0.0))
+        return 1;
     }
-  return hits;
+  return 0;
 }
 
 /* The impulse side of a point of an impact at its time t: lever arms ra, rb
