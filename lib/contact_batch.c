@@ -10,7 +10,9 @@
 
 /* ------------------------------------------------------------ colouring */
 
-int32_t constraint_colour (uint32_t *used_a, uint32_t *used_b)
+/* constraint_colour, inlined into the colouring of the contacts, where
+ * which bodies move is known at each call. */
+ALWAYS_INLINE int32_t pick_colour (uint32_t *used_a, uint32_t *used_b)
 {
   uint32_t taken = (used_a ? *used_a : 0u) | (used_b ? *used_b : 0u), bit;
   int32_t colour = 0;
@@ -31,6 +33,11 @@ int32_t constraint_colour (uint32_t *used_a, uint32_t *used_b)
   return colour;
 }
 
+int32_t constraint_colour (uint32_t *used_a, uint32_t *used_b)
+{
+  return pick_colour (used_a, used_b);
+}
+
 /* What the batches solve: contacts whose whole step is the sub-steps'
  * passes. Restitution, the extra passes of small bodies and manifolds of
  * more than two points stay with contact_solver.c. */
@@ -39,71 +46,96 @@ static int batchable (const contact *k)
   return k->count >= 1 && k->count <= 2 && k->restitution == 0.0 && !k->fine;
 }
 
-/* Lane `lane` of batch c: contact k (index `index`), or, with k NULL, an
- * unused lane: the inert body on both sides and every number 0, so it
- * computes impulses of 0 and moves nothing. Every field of the lane the
- * kernels read is written (the batches are not cleared between steps): the
- * second point's only where the batch has two (points 2). */
-static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t index, const solver_body *sb,
-                       int32_t inert, int points)
+/* Lane `lane` of point j of a batch, unused: every number 0, so it
+ * computes impulses of 0. */
+static void pack_point_empty (batch_point *q, int lane)
 {
-  int j, n = k ? k->count : 0, block = k && k->block;
-  const solver_body *a = k ? &sb[k->a] : NULL, *b = k ? &sb[k->b] : NULL;
-  double det = block ? k->k11 * k->k22 - k->k12 * k->k12 : 0.0;
-  /* contact_lcp2's first case, as the inverse of K when it has one */
-  int invertible = block && det > 1e-12 * k->k11 * k->k22;
-  c->a[lane] = k ? k->a : inert;
-  c->b[lane] = k ? k->b : inert;
-  c->contact[lane] = k ? index : -1;
-  c->im_a[lane] = a ? a->im : 0.0;
-  c->ii_a[lane] = a ? a->ii : 0.0;
-  c->im_b[lane] = b ? b->im : 0.0;
-  c->ii_b[lane] = b ? b->ii : 0.0;
-  c->friction[lane] = k ? k->friction : 0.0;
-  c->slop[lane] = k ? k->slop : 0.0;
-  c->max_push[lane] = k ? k->max_push : 0.0;
-  c->k11[lane] = block ? k->k11 : 0.0;
-  c->k12[lane] = block ? k->k12 : 0.0;
-  c->k22[lane] = block ? k->k22 : 0.0;
-  c->pair[lane] = block ? 1.0 : 0.0;
-  c->i11[lane] = invertible ? k->k22 / det : 0.0;
-  c->i12[lane] = invertible ? -k->k12 / det : 0.0;
-  c->i22[lane] = invertible ? k->k11 / det : 0.0;
-  c->block[lane] = invertible ? 1.0 : 0.0;
+  q->nx[lane] = q->ny[lane] = 0.0;
+  q->ra_x[lane] = q->ra_y[lane] = q->rb_x[lane] = q->rb_y[lane] = 0.0;
+  q->adjusted[lane] = 0.0;
+  q->rn_a[lane] = q->rn_b[lane] = q->rt_a[lane] = q->rt_b[lane] = 0.0;
+  q->normal_mass[lane] = q->tangent_mass[lane] = 0.0;
+  q->normal_impulse[lane] = q->tangent_impulse[lane] = q->push_impulse[lane] = 0.0;
+  q->total[lane] = 0.0;
+}
+
+/* An unused lane of batch c: the inert body on both sides and every number
+ * 0, so it computes impulses of 0 and moves nothing (as pack_lane, every
+ * field the kernels read). */
+static void pack_empty_lane (contact_batch *c, int lane, int32_t inert, int points)
+{
+  int j;
+  c->a[lane] = c->b[lane] = inert;
+  c->contact[lane] = -1;
+  c->im_a[lane] = c->ii_a[lane] = c->im_b[lane] = c->ii_b[lane] = 0.0;
+  c->friction[lane] = c->slop[lane] = c->max_push[lane] = 0.0;
+  c->k11[lane] = c->k12[lane] = c->k22[lane] = c->pair[lane] = 0.0;
+  c->i11[lane] = c->i12[lane] = c->i22[lane] = c->block[lane] = 0.0;
   for (j = 0; j < points; ++j)
+    pack_point_empty (&c->p[j], lane);
+}
+
+/* Lane `lane` of batch c: contact k (index `index`). Every field of the
+ * lane the kernels read is written (the batches are not cleared between
+ * steps): the second point's only where the batch has two (points 2). */
+static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t index, const solver_body *sb,
+                       int points)
+{
+  const solver_body *a = &sb[k->a], *b = &sb[k->b];
+  int j, n = k->count;
+  c->a[lane] = k->a;
+  c->b[lane] = k->b;
+  c->contact[lane] = index;
+  c->im_a[lane] = a->im;
+  c->ii_a[lane] = a->ii;
+  c->im_b[lane] = b->im;
+  c->ii_b[lane] = b->ii;
+  c->friction[lane] = k->friction;
+  c->slop[lane] = k->slop;
+  c->max_push[lane] = k->max_push;
+  if (k->block)
+    {
+      double det = k->k11 * k->k22 - k->k12 * k->k12;
+      /* contact_lcp2's first case, as the inverse of K when it has one */
+      int invertible = det > 1e-12 * k->k11 * k->k22;
+      c->k11[lane] = k->k11;
+      c->k12[lane] = k->k12;
+      c->k22[lane] = k->k22;
+      c->pair[lane] = 1.0;
+      c->i11[lane] = invertible ? k->k22 / det : 0.0;
+      c->i12[lane] = invertible ? -k->k12 / det : 0.0;
+      c->i22[lane] = invertible ? k->k11 / det : 0.0;
+      c->block[lane] = invertible ? 1.0 : 0.0;
+    }
+  else
+    {
+      c->k11[lane] = c->k12[lane] = c->k22[lane] = c->pair[lane] = 0.0;
+      c->i11[lane] = c->i12[lane] = c->i22[lane] = c->block[lane] = 0.0;
+    }
+  for (j = 0; j < n; ++j)
     {
       batch_point *q = &c->p[j];
-      if (j < n)
-        {
-          const contact_point *p = &k->points[j];
-          q->nx[lane] = p->normal.x;
-          q->ny[lane] = p->normal.y;
-          q->ra_x[lane] = p->ra.x;
-          q->ra_y[lane] = p->ra.y;
-          q->rb_x[lane] = p->rb.x;
-          q->rb_y[lane] = p->rb.y;
-          q->adjusted[lane] = p->adjusted;
-          q->rn_a[lane] = p->rn_a;
-          q->rn_b[lane] = p->rn_b;
-          q->rt_a[lane] = p->rt_a;
-          q->rt_b[lane] = p->rt_b;
-          q->normal_mass[lane] = p->normal_mass;
-          q->tangent_mass[lane] = p->tangent_mass;
-          q->normal_impulse[lane] = p->normal_impulse;
-          q->tangent_impulse[lane] = p->tangent_impulse;
-        }
-      else
-        {
-          q->nx[lane] = q->ny[lane] = 0.0;
-          q->ra_x[lane] = q->ra_y[lane] = q->rb_x[lane] = q->rb_y[lane] = 0.0;
-          q->adjusted[lane] = 0.0;
-          q->rn_a[lane] = q->rn_b[lane] = q->rt_a[lane] = q->rt_b[lane] = 0.0;
-          q->normal_mass[lane] = q->tangent_mass[lane] = 0.0;
-          q->normal_impulse[lane] = q->tangent_impulse[lane] = 0.0;
-        }
+      const contact_point *p = &k->points[j];
+      q->nx[lane] = p->normal.x;
+      q->ny[lane] = p->normal.y;
+      q->ra_x[lane] = p->ra.x;
+      q->ra_y[lane] = p->ra.y;
+      q->rb_x[lane] = p->rb.x;
+      q->rb_y[lane] = p->rb.y;
+      q->adjusted[lane] = p->adjusted;
+      q->rn_a[lane] = p->rn_a;
+      q->rn_b[lane] = p->rn_b;
+      q->rt_a[lane] = p->rt_a;
+      q->rt_b[lane] = p->rt_b;
+      q->normal_mass[lane] = p->normal_mass;
+      q->tangent_mass[lane] = p->tangent_mass;
+      q->normal_impulse[lane] = p->normal_impulse;
+      q->tangent_impulse[lane] = p->tangent_impulse;
       q->push_impulse[lane] = 0.0;
-      q->total[lane] = j < n ? k->points[j].total_impulse : 0.0; /* an impact's (contact_impacts) */
+      q->total[lane] = p->total_impulse; /* an impact's (contact_impacts) */
     }
+  for (; j < points; ++j)
+    pack_point_empty (&c->p[j], lane);
 }
 
 /* The key a contact is packed by: its colour's two-point contacts, then its
@@ -113,17 +145,37 @@ static int32_t pack_key (const contact *k, int32_t colour)
   return 2 * colour + (k->count == 1);
 }
 
+/* A batchable contact's colour, as its pack_key in keys[i] (left -1 when
+ * every colour is taken), marking it batched. `pass` 1 colours the
+ * contacts with a body that does not move. */
+ALWAYS_INLINE void colour_contact (contact *ct, int32_t i, int pass, int ma, int mb, uint32_t *used, int32_t *keys,
+                                   int32_t *end)
+{
+  int32_t colour = pick_colour (ma ? &used[ct->a] : NULL, mb ? &used[ct->b] : NULL);
+  if (colour >= 0)
+    {
+      keys[i] = pack_key (ct, colour + pass * CONSTRAINT_COLOURS);
+      ct->batched = 1;
+      end[keys[i] + 1]++;
+    }
+}
+
 void contact_batch_prepare (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
   const solver_body *sb = world->solver_bodies;
   uint32_t *used = world->colour_used;
-  int32_t *colour = world->batch_scratch, *order = colour + c->count, *end = order + c->count;
+  /* keys: each contact's pack_key, -1 when it is not batched */
+  int32_t *keys = world->batch_scratch, *order = keys + c->count, *end = order + c->count;
+  /* the contacts the second colouring takes, in list order, in the room
+   * `order` has until the counting sort */
+  int32_t *apart = order, apart_count = 0;
   int32_t i, k, n = 0;
-  int pass;
   (void) ctx;
   for (i = 0; i <= 4 * CONSTRAINT_COLOURS; ++i)
     end[i] = 0;
+  for (i = 0; i < world->slot_count; ++i)
+    used[i] = 0u;
   /* greedy, in list order: each contact takes the first colour free at
    * both of its moving bodies. Contacts with a body that does not move (the
    * ground, a wall) are coloured apart, in colours solved after all the
@@ -132,35 +184,36 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
    * cannot press its bodies into the walls. */
   for (i = 0; i < c->count; ++i)
     {
-      colour[i] = -1;
-      c->list[i].batched = 0;
+      contact *ct = &c->list[i];
+      keys[i] = -1;
+      ct->batched = 0;
+      if (!batchable (ct))
+        continue;
+      if (sb[ct->a].moves == MOVES_DYNAMIC && sb[ct->b].moves == MOVES_DYNAMIC)
+        colour_contact (ct, i, 0, 1, 1, used, keys, end);
+      else
+        apart[apart_count++] = i;
     }
-  for (pass = 0; pass < 2; ++pass)
+  /* the second colouring starts from no colour taken at the bodies it
+   * reads: the moving bodies of its own contacts */
+  for (k = 0; k < apart_count; ++k)
     {
-      for (i = 0; i < world->slot_count; ++i)
-        used[i] = 0u;
-      for (i = 0; i < c->count; ++i)
-        {
-          contact *ct = &c->list[i];
-          int ma = sb[ct->a].moves == MOVES_DYNAMIC, mb = sb[ct->b].moves == MOVES_DYNAMIC;
-          if ((ma && mb) == (pass == 1) || !batchable (ct))
-            continue;
-          colour[i] = constraint_colour (ma ? &used[ct->a] : NULL, mb ? &used[ct->b] : NULL);
-          if (colour[i] >= 0)
-            {
-              colour[i] += pass * CONSTRAINT_COLOURS;
-              ct->batched = 1;
-              end[pack_key (ct, colour[i]) + 1]++;
-            }
-        }
+      const contact *ct = &c->list[apart[k]];
+      used[ct->a] = used[ct->b] = 0u;
+    }
+  for (k = 0; k < apart_count; ++k)
+    {
+      contact *ct = &c->list[apart[k]];
+      colour_contact (ct, apart[k], 1, sb[ct->a].moves == MOVES_DYNAMIC, sb[ct->b].moves == MOVES_DYNAMIC, used,
+                      keys, end);
     }
   /* each colour's contacts, two-point ones first, each kind in list order
    * (a counting sort), four to a batch */
   for (i = 0; i < 4 * CONSTRAINT_COLOURS; ++i)
     end[i + 1] += end[i];
   for (i = 0; i < c->count; ++i)
-    if (colour[i] >= 0)
-      order[end[pack_key (&c->list[i], colour[i])]++] = i;
+    if (keys[i] >= 0)
+      order[end[keys[i]]++] = i;
   for (k = 0, i = 0; k < 2 * CONSTRAINT_COLOURS; ++k)
     {
       int lane = 0, points = 0;
@@ -171,7 +224,7 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
            * the batch's */
           if (lane == 0)
             points = ct->count;
-          pack_lane (&world->batches[n], lane, ct, order[i], sb, world->slot_count, points);
+          pack_lane (&world->batches[n], lane, ct, order[i], sb, points);
           if (++lane == BATCH_LANES)
             {
               world->batches[n++].points = points;
@@ -181,18 +234,18 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
       if (lane > 0)
         {
           for (; lane < BATCH_LANES; ++lane)
-            pack_lane (&world->batches[n], lane, NULL, -1, sb, world->slot_count, points);
+            pack_empty_lane (&world->batches[n], lane, world->slot_count, points);
           world->batches[n++].points = points;
         }
     }
   world->batch_count = n;
   /* the rest, in list order, for contact_solver.c's passes (in the room
-   * the colours took) */
-  c->rest = colour;
+   * the keys took, each read before it is written over) */
+  c->rest = keys;
   c->rest_count = 0;
   for (i = 0; i < c->count; ++i)
-    if (!c->list[i].batched)
-      colour[c->rest_count++] = i;
+    if (keys[i] < 0)
+      keys[c->rest_count++] = i;
 }
 
 void contact_batch_store (carom_world *world)
