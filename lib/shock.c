@@ -96,6 +96,10 @@ static int column_link (const contact *k, const solver_body *lower)
   return k->restitution == 0.0 && lower->im > 0.0;
 }
 
+/* count_supports' flag on both bodies of a heavy-on-light contact (above
+ * any count of supports). */
+#define SUPPORT_HEAVY (1 << 30)
+
 /* Which bodies the pass holds others on, in `mark`, which holds
  * count_supports' counts: every dynamic body that rests on a column's link
  * alone, both bodies of every heavy-on-light contact, then, going down the
@@ -107,10 +111,7 @@ static void mark_loaded (carom_world *world, const int32_t *order, int32_t count
   const int32_t *level = world->solver_scratch;
   int32_t i;
   for (i = 0; i < world->slot_count; ++i)
-    mark[i] = mark[i] == 1 && sb[i].im > 0.0;
-  for (i = 0; i < c->count; ++i)
-    if (heavy_on_light_pair (&sb[c->list[i].a], &sb[c->list[i].b]))
-      mark[c->list[i].a] = mark[c->list[i].b] = 1;
+    mark[i] = (mark[i] & SUPPORT_HEAVY) != 0 || (mark[i] == 1 && sb[i].im > 0.0);
   /* `order` goes up the levels, so backwards a body is marked before the
    * contacts it rests on are reached */
   for (i = count - 1; i >= 0; --i)
@@ -258,7 +259,9 @@ void contact_shock_destroy (carom_world *world)
 /* What each body rests on, in `count` (one per slot): a column's link
  * counted 1 and any other support 2, so a body on a link alone counts 1;
  * the body a contact's normal points up to (within 60 degrees, as
- * rests_on) rests on the other. Returns whether the step needs shock
+ * rests_on) rests on the other. Both bodies of a heavy-on-light contact
+ * are flagged SUPPORT_HEAVY besides, for mark_loaded (so it need not walk
+ * the contacts again). Returns whether the step needs shock
  * propagation: some two touching dynamic bodies differ in mass more than
  * SHOCK_MASS_RATIO, or some dynamic body rests on a column's link alone.
  * By the normals, not the levels: those are not computed yet, and not
@@ -275,7 +278,12 @@ static int count_supports (const carom_world *world, vec2 up_dir, int32_t *count
     {
       const contact *k = &c->list[i];
       double lift = v2_dot (k->points[0].normal, up_dir);
-      needs |= heavy_on_light_pair (&sb[k->a], &sb[k->b]);
+      if (heavy_on_light_pair (&sb[k->a], &sb[k->b]))
+        {
+          needs = 1;
+          count[k->a] |= SUPPORT_HEAVY;
+          count[k->b] |= SUPPORT_HEAVY;
+        }
       /* the normal points from a to b: b rests on a when it points up */
       if (lift >= 0.5)
         count[k->b] += column_link (k, &sb[k->a]) ? 1 : 2;
