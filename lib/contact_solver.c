@@ -46,9 +46,9 @@ typedef struct pair_bodies {
   vec2 pa, pb;                /* the centres of mass */
   double reach_a, reach_b;    /* twice the bounding radii (lever_arms) */
   int circle_a, circle_b;
-  double im;                  /* a->im + b->im, the first sum of effective_mass */
+  double im;                  /* a->im + b->im (effective_mass_of) */
   double ii_a, ii_b;
-  vec2 dv;                    /* b->v - a->v, the first difference of contact_speed */
+  vec2 dv;                    /* b->v - a->v (contact_speed_of) */
   double w_a, w_b;
 } pair_bodies;
 
@@ -67,29 +67,6 @@ static void pair_bodies_load (pair_bodies *pb, const body *ba, const body *bb, c
   pb->dv = v2_sub (b->v, a->v);
   pb->w_a = a->w;
   pb->w_b = b->w;
-}
-
-/* effective_mass, contact_speed and point_masses on the loaded values:
- * the same operations in the same order, so the same bits. */
-ALWAYS_INLINE double pair_mass (const pair_bodies *pb, double ra_d, double rb_d)
-{
-  double k = pb->im + pb->ii_a * ra_d * ra_d + pb->ii_b * rb_d * rb_d;
-  return k > 0.0 && isfinite (k) ? 1.0 / k : 0.0;
-}
-
-ALWAYS_INLINE double pair_speed (const pair_bodies *pb, vec2 d, double ra_d, double rb_d)
-{
-  return v2_dot (pb->dv, d) + pb->w_b * rb_d - pb->w_a * ra_d;
-}
-
-ALWAYS_INLINE void pair_point_masses (contact_point *p, const pair_bodies *pb)
-{
-  p->normal_mass = pair_mass (pb, p->rn_a, p->rn_b);
-  p->tangent_mass = pair_mass (pb, p->rt_a, p->rt_b);
-  if (p->normal_mass == 0.0)
-    p->rn_a = p->rn_b = p->normal_impulse = 0.0;
-  if (p->tangent_mass == 0.0)
-    p->rt_a = p->rt_b = p->tangent_impulse = 0.0;
 }
 
 /* Lever arms of a contact point. A lever arm cannot be longer than the body
@@ -219,8 +196,8 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
           double old_nm = p->normal_mass, old_tm = p->tangent_mass, vn;
           int near, meets;
           lever_arms (p, &pb, v2_sub (p->point, pb.pa), v2_sub (p->point, pb.pb));
-          pair_point_masses (p, &pb);
-          vn = pair_speed (&pb, p->normal, p->rn_a, p->rn_b);
+          point_masses_of (p, pb.im, pb.ii_a, pb.ii_b);
+          vn = contact_speed_of (pb.dv, pb.w_a, pb.w_b, p->normal, p->rn_a, p->rn_b);
           /* before any impulse of the step (see contact_solve) */
           p->approach = vn;
           p->toi = -1.0;
@@ -230,8 +207,8 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
                * whole step (toi = dt), with the arms of that moment */
               p->toi = meeting_time (p->depth, vn, relative_fall (a, b, p->normal, ctx), dt);
               lever_arms_at_impact (p, &pb, a, b, p->toi);
-              pair_point_masses (p, &pb);
-              p->approach = pair_speed (&pb, p->normal, p->rn_a, p->rn_b);
+              point_masses_of (p, pb.im, pb.ii_a, pb.ii_b);
+              p->approach = contact_speed_of (pb.dv, pb.w_a, pb.w_b, p->normal, p->rn_a, p->rn_b);
             }
           /* constrain_bodies */
           near = p->depth >= near_depth;
@@ -251,7 +228,7 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
       a->constrained |= bits;
       b->constrained |= bits;
       contact_impact_points (world, k, a, b, ctx);
-      pair_matrix (k, a, b);
+      pair_matrix_of (k, pb.im, pb.ii_a, pb.ii_b);
       k->cold = begins_resting (k, ctx);
       cold += k->cold;
     }

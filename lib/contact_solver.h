@@ -62,10 +62,16 @@ static inline void contact_push (solver_body *a, solver_body *b, vec2 d, double 
 }
 
 /* (v_bp - v_ap) . d, eq. 3.15 and the corrected 3.17, using
- * (w x r) . d = w (r x d) */
+ * (w x r) . d = w (r x d); dv = b->v - a->v, for a caller that loaded it
+ * once for several points. */
+static inline double contact_speed_of (vec2 dv, double w_a, double w_b, vec2 d, double ra_d, double rb_d)
+{
+  return v2_dot (dv, d) + w_b * rb_d - w_a * ra_d;
+}
+
 static inline double contact_speed (const solver_body *a, const solver_body *b, vec2 d, double ra_d, double rb_d)
 {
-  return v2_dot (v2_sub (b->v, a->v), d) + b->w * rb_d - a->w * ra_d;
+  return contact_speed_of (v2_sub (b->v, a->v), a->w, b->w, d, ra_d, rb_d);
 }
 
 /* The separation of a point now: at detection, plus how far the bodies'
@@ -107,26 +113,40 @@ static inline int contact_lcp2 (double k11, double k12, double k22, double b1, d
  * would sway. */
 #define BLOCK_MAX_CONDITION 1e4
 
-static inline double effective_mass (const solver_body *a, const solver_body *b, double ra_d, double rb_d)
+/* The effective mass along d of bodies whose inverse masses sum to im
+ * (a->im + b->im, the first sum) and whose inverse inertias are ii_a,
+ * ii_b: the functions below on values a caller loaded once for several
+ * points. */
+static inline double effective_mass_of (double im, double ii_a, double ii_b, double ra_d, double rb_d)
 {
-  double k = a->im + b->im + a->ii * ra_d * ra_d + b->ii * rb_d * rb_d;
+  double k = im + ii_a * ra_d * ra_d + ii_b * rb_d * rb_d;
   /* a non-finite k (a body far smaller than the rounding of its
    * coordinates) leaves the point inert rather than poisoning the world */
   return k > 0.0 && isfinite (k) ? 1.0 / k : 0.0;
+}
+
+static inline double effective_mass (const solver_body *a, const solver_body *b, double ra_d, double rb_d)
+{
+  return effective_mass_of (a->im + b->im, a->ii, b->ii, ra_d, rb_d);
 }
 
 /* The effective masses of a point, eq. 3.23's denominator along the normal
  * and the tangent. An inert direction also loses its lever arms and its
  * impulse: ii * (r x d) may itself overflow there, and inf * 0 in a push is
  * NaN. */
-ALWAYS_INLINE void point_masses (contact_point *p, const solver_body *a, const solver_body *b)
+ALWAYS_INLINE void point_masses_of (contact_point *p, double im, double ii_a, double ii_b)
 {
-  p->normal_mass = effective_mass (a, b, p->rn_a, p->rn_b);
-  p->tangent_mass = effective_mass (a, b, p->rt_a, p->rt_b);
+  p->normal_mass = effective_mass_of (im, ii_a, ii_b, p->rn_a, p->rn_b);
+  p->tangent_mass = effective_mass_of (im, ii_a, ii_b, p->rt_a, p->rt_b);
   if (p->normal_mass == 0.0)
     p->rn_a = p->rn_b = p->normal_impulse = 0.0;
   if (p->tangent_mass == 0.0)
     p->rt_a = p->rt_b = p->tangent_impulse = 0.0;
+}
+
+ALWAYS_INLINE void point_masses (contact_point *p, const solver_body *a, const solver_body *b)
+{
+  point_masses_of (p, a->im + b->im, a->ii, b->ii);
 }
 
 /* The arm from a body's centre to its copy of a contact point, whose motion
@@ -169,18 +189,26 @@ static inline void constrain_bodies (const contact *k, const contact_point *p, s
 /* The 2x2 matrix of a two-point contact: eq. 3.23's denominators and their
  * coupling (on one face the normals agree; the vertex-edge method may give
  * two points with their own normals, coupled by n1 . n2). */
-static inline void pair_matrix (contact *k, const solver_body *a, const solver_body *b)
+static inline void pair_matrix_of (contact *k, double im, double ii_a, double ii_b)
 {
   const contact_point *p1 = &k->points[0], *p2 = &k->points[1];
-  double im = a->im + b->im;
+  double k11, k12, k22;
   k->block = 0;
   if (k->count != 2)
     return;
-  k->k11 = im + a->ii * p1->rn_a * p1->rn_a + b->ii * p1->rn_b * p1->rn_b;
-  k->k22 = im + a->ii * p2->rn_a * p2->rn_a + b->ii * p2->rn_b * p2->rn_b;
-  k->k12 = im * v2_dot (p1->normal, p2->normal) + a->ii * p1->rn_a * p2->rn_a + b->ii * p1->rn_b * p2->rn_b;
-  k->block = p1->normal_mass > 0.0 && p2->normal_mass > 0.0
-             && k->k11 * k->k11 < BLOCK_MAX_CONDITION * (k->k11 * k->k22 - k->k12 * k->k12);
+  k11 = im + ii_a * p1->rn_a * p1->rn_a + ii_b * p1->rn_b * p1->rn_b;
+  k22 = im + ii_a * p2->rn_a * p2->rn_a + ii_b * p2->rn_b * p2->rn_b;
+  k12 = im * v2_dot (p1->normal, p2->normal) + ii_a * p1->rn_a * p2->rn_a + ii_b * p1->rn_b * p2->rn_b;
+  k->k11 = k11;
+  k->k12 = k12;
+  k->k22 = k22;
+  k->block = p1->normal_mass > 0.0 && p2->normal_mass > 0.0 && k11 * k11 < BLOCK_MAX_CONDITION * (k11 * k22 - k12 * k12);
+}
+
+/* (im: a->im + b->im, as effective_mass_of) */
+static inline void pair_matrix (contact *k, const solver_body *a, const solver_body *b)
+{
+  pair_matrix_of (k, a->im + b->im, a->ii, b->ii);
 }
 
 /* A normal impulse applied at a point, `remaining` before the end of the
