@@ -4,6 +4,8 @@
 #ifndef CAROM_CONTACT_SOLVER_H
 #define CAROM_CONTACT_SOLVER_H
 
+#include <float.h>
+
 #include "body.h"
 #include "contact.h"
 #include "solver.h"
@@ -121,8 +123,9 @@ static inline double effective_mass_of (double im, double ii_a, double ii_b, dou
 {
   double k = im + ii_a * ra_d * ra_d + ii_b * rb_d * rb_d;
   /* a non-finite k (a body far smaller than the rounding of its
-   * coordinates) leaves the point inert rather than poisoning the world */
-  return k > 0.0 && isfinite (k) ? 1.0 / k : 0.0;
+   * coordinates) leaves the point inert rather than poisoning the world;
+   * past k > 0 (not NaN), k <= DBL_MAX is isfinite (k) in one comparison */
+  return k > 0.0 && k <= DBL_MAX ? 1.0 / k : 0.0;
 }
 
 static inline double effective_mass (const solver_body *a, const solver_body *b, double ra_d, double rb_d)
