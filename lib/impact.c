@@ -62,6 +62,22 @@ static double closing_reach (vec2 v, vec2 n, const step_context *ctx)
   return (approach > 0.0 ? approach : 0.0) + 0.5 * ctx->accel * ctx->dt * ctx->dt;
 }
 
+/* The first test of a contact that may fly into an impact (see
+ * impact_within_step): no point touching, nor near and slow. One such
+ * point rules the contact out whatever the others say; most contacts
+ * (those resting) are ruled out by it, before anything else is computed. */
+static int all_apart (const contact *k, const step_context *ctx)
+{
+  int32_t j;
+  for (j = 0; j < k->count; ++j)
+    {
+      const contact_point *p = &k->points[j];
+      if (!(p->depth < 0.0) || (p->depth >= -k->slop && !(fabs (p->approach) >= ctx->restitution_threshold)))
+        return 0;
+    }
+  return 1;
+}
+
 /* A contact whose bodies may fly free into an impact within the step:
  * every point apart at detection, none resting (near and slow), and one
  * closing faster than resting contact ever does and meeting within the
@@ -72,7 +88,7 @@ static double closing_reach (vec2 v, vec2 n, const step_context *ctx)
  * and the points' own estimate (their speed at the arms of the detection)
  * misses it (the elastic gas: 5 cm deep). Its pieces are polygons' convex
  * pieces or circles (the time of impact follows their separation,
- * contact_separation_at). */
+ * contact_separation_at). The first part, all_apart, is its caller's. */
 static int impact_within_step (const carom_world *world, const contact *k, const solver_body *a,
                                const solver_body *b, const step_context *ctx)
 {
@@ -81,15 +97,6 @@ static int impact_within_step (const carom_world *world, const contact *k, const
   int swept = -1; /* contact_pair_swept, asked once it is needed */
   vec2 v;
   int32_t j;
-  /* a point touching, or near and slow, rules the contact out whatever the
-   * others say: checked first, as it rules out most contacts (those
-   * resting) before anything else is computed */
-  for (j = 0; j < k->count; ++j)
-    {
-      const contact_point *p = &k->points[j];
-      if (!(p->depth < 0.0) || (p->depth >= -k->slop && !(fabs (p->approach) >= ctx->restitution_threshold)))
-        return 0;
-    }
   ba = &world->bodies[k->a], bb = &world->bodies[k->b];
   if (k->piece_a < 0 && k->piece_b < 0 && ba->shape.kind == CAROM_SHAPE_POLYGON)
     return 0; /* the vertex-edge method's whole outlines */
@@ -336,10 +343,22 @@ static void impact_points (carom_world *world, contact *k, const body *ba, const
 }
 
 
-void contact_impact_points (carom_world *world, contact *k, solver_body *a, solver_body *b, const step_context *ctx)
+/* contact_impact_points past all_apart, out of line:
+ * the contacts that test rules out (most) then leave without setting up
+ * the frame the rest needs. */
+#ifdef __GNUC__
+__attribute__ ((noinline))
+#endif
+static void impact_search (carom_world *world, contact *k, solver_body *a, solver_body *b, const step_context *ctx)
 {
   if (impact_within_step (world, k, a, b, ctx))
     impact_points (world, k, &world->bodies[k->a], &world->bodies[k->b], a, b, ctx);
+}
+
+void contact_impact_points (carom_world *world, contact *k, solver_body *a, solver_body *b, const step_context *ctx)
+{
+  if (all_apart (k, ctx))
+    impact_search (world, k, a, b, ctx);
 }
 
 /* ------------------------------------------------------------ impacts */
