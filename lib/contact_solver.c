@@ -176,7 +176,10 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
       double reach = ba->shape.bound_radius < bb->shape.bound_radius ? ba->shape.bound_radius : bb->shape.bound_radius;
       double near_depth = -k->slop;
       /* constrain_bodies' bits of every point, given to both bodies once */
-      int32_t bits = 0;
+      int32_t bits = 0, count = k->count;
+      contact_point *points = k->points;
+      /* k->friction == 0: it keeps no tangent impulse */
+      int frictionless = k->friction == 0.0;
       pair_bodies pb;
       pair_bodies_load (&pb, ba, bb, a, b);
       k->max_push = CONTACT_PUSH_PER_STEP * reach * ctx->inv_dt;
@@ -190,9 +193,9 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
       bouncy += k->restitution > 0.0;
       k->fine = fall > k->slop;
       fine += k->fine;
-      for (j = 0; j < k->count; ++j)
+      for (j = 0; j < count; ++j)
         {
-          contact_point *p = &k->points[j];
+          contact_point *p = &points[j];
           double old_nm = p->normal_mass, old_tm = p->tangent_mass, vn;
           int near, meets;
           lever_arms (p, &pb, v2_sub (p->point, pb.pa), v2_sub (p->point, pb.pb));
@@ -218,7 +221,7 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
           if (near && vn >= -threshold && vn < threshold)
             bits |= CONSTRAINED_HELD;
           rescale_warm_start (p, old_nm, old_tm);
-          if (k->friction == 0.0)
+          if (frictionless)
             p->tangent_impulse = 0.0;
           p->after = 0.0;
           p->total_impulse = p->normal_moment = p->impact_moment = 0.0;
