@@ -59,6 +59,28 @@ static void pack_point_empty (batch_point *q, int lane)
   q->total[lane] = 0.0;
 }
 
+/* Lane `lane` of point j of a batch: contact point p. */
+static void pack_point (batch_point *q, int lane, const contact_point *p)
+{
+  q->nx[lane] = p->normal.x;
+  q->ny[lane] = p->normal.y;
+  q->ra_x[lane] = p->ra.x;
+  q->ra_y[lane] = p->ra.y;
+  q->rb_x[lane] = p->rb.x;
+  q->rb_y[lane] = p->rb.y;
+  q->adjusted[lane] = p->adjusted;
+  q->rn_a[lane] = p->rn_a;
+  q->rn_b[lane] = p->rn_b;
+  q->rt_a[lane] = p->rt_a;
+  q->rt_b[lane] = p->rt_b;
+  q->normal_mass[lane] = p->normal_mass;
+  q->tangent_mass[lane] = p->tangent_mass;
+  q->normal_impulse[lane] = p->normal_impulse;
+  q->tangent_impulse[lane] = p->tangent_impulse;
+  q->push_impulse[lane] = 0.0;
+  q->total[lane] = p->total_impulse; /* an impact's (contact_impacts) */
+}
+
 /* An unused lane of batch c: the inert body on both sides and every number
  * 0, so it computes impulses of 0 and moves nothing (as pack_lane, every
  * field the kernels read). */
@@ -82,7 +104,6 @@ static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t ind
                        int points)
 {
   const solver_body *a = &sb[k->a], *b = &sb[k->b];
-  int j, n = k->count;
   c->a[lane] = k->a;
   c->b[lane] = k->b;
   c->contact[lane] = index;
@@ -112,30 +133,12 @@ static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t ind
       c->k11[lane] = c->k12[lane] = c->k22[lane] = c->pair[lane] = 0.0;
       c->i11[lane] = c->i12[lane] = c->i22[lane] = c->block[lane] = 0.0;
     }
-  for (j = 0; j < n; ++j)
-    {
-      batch_point *q = &c->p[j];
-      const contact_point *p = &k->points[j];
-      q->nx[lane] = p->normal.x;
-      q->ny[lane] = p->normal.y;
-      q->ra_x[lane] = p->ra.x;
-      q->ra_y[lane] = p->ra.y;
-      q->rb_x[lane] = p->rb.x;
-      q->rb_y[lane] = p->rb.y;
-      q->adjusted[lane] = p->adjusted;
-      q->rn_a[lane] = p->rn_a;
-      q->rn_b[lane] = p->rn_b;
-      q->rt_a[lane] = p->rt_a;
-      q->rt_b[lane] = p->rt_b;
-      q->normal_mass[lane] = p->normal_mass;
-      q->tangent_mass[lane] = p->tangent_mass;
-      q->normal_impulse[lane] = p->normal_impulse;
-      q->tangent_impulse[lane] = p->tangent_impulse;
-      q->push_impulse[lane] = 0.0;
-      q->total[lane] = p->total_impulse; /* an impact's (contact_impacts) */
-    }
-  for (; j < points; ++j)
-    pack_point_empty (&c->p[j], lane);
+  /* one point or two (batchable) */
+  pack_point (&c->p[0], lane, &k->points[0]);
+  if (k->count == 2)
+    pack_point (&c->p[1], lane, &k->points[1]);
+  else if (points == 2)
+    pack_point_empty (&c->p[1], lane);
 }
 
 /* The key a contact is packed by: its colour's two-point contacts, then its
