@@ -72,8 +72,7 @@ static void pair_bodies_load (pair_bodies *pb, const body *ba, const body *bb, c
 /* Lever arms of a contact point. A lever arm cannot be longer than the body
  * reaches (rounding of far-apart coordinates can make it so for a tiny
  * body); a circle's normal impulse passes through its centre, so r x n is
- * exactly 0 there whatever the rounding of the point says (and its
- * separation arm is 0, separation_arm). */
+ * exactly 0 there whatever the rounding of the point says. */
 ALWAYS_INLINE void lever_arms (contact_point *p, const pair_bodies *pb, vec2 ra, vec2 rb)
 {
   vec2 t = v2_perp (p->normal);
@@ -86,8 +85,8 @@ ALWAYS_INLINE void lever_arms (contact_point *p, const pair_bodies *pb, vec2 ra,
   p->rn_b = pb->circle_b ? 0.0 : v2_cross (rb, p->normal);
   p->rt_a = v2_cross (ra, t);
   p->rt_b = v2_cross (rb, t);
-  p->ra = pb->circle_a ? v2 (0.0, 0.0) : ra;
-  p->rb = pb->circle_b ? v2 (0.0, 0.0) : rb;
+  p->ra = separation_arm_of (pb->circle_a, ra);
+  p->rb = separation_arm_of (pb->circle_b, rb);
   p->adjusted = -p->depth - v2_dot (v2_sub (p->rb, p->ra), p->normal);
 }
 
@@ -213,13 +212,10 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
               point_masses_of (p, pb.im, pb.ii_a, pb.ii_b);
               p->approach = contact_speed_of (pb.dv, pb.w_a, pb.w_b, p->normal, p->rn_a, p->rn_b);
             }
-          /* constrain_bodies */
+          /* constrain_bodies, for both bodies once after the loop */
           near = p->depth >= near_depth;
           meets = p->toi >= 0.0 && p->toi < dt;
-          if (meets || (near && vn < threshold))
-            bits |= CONSTRAINED_ANY;
-          if (near && vn >= -threshold && vn < threshold)
-            bits |= CONSTRAINED_HELD;
+          bits |= constrained_bits (near, meets, vn, threshold);
           rescale_warm_start (p, old_nm, old_tm);
           if (frictionless)
             p->tangent_impulse = 0.0;

@@ -157,9 +157,14 @@ ALWAYS_INLINE void point_masses (contact_point *p, const solver_body *a, const s
  * surface meets the normal, which does not turn with the circle: its centre
  * stands for it (arm 0), or a spinning ball on the ground would seem to
  * rise off it as its bottom point turned away, and sink. */
+static inline vec2 separation_arm_of (int circle, vec2 r)
+{
+  return circle ? v2 (0.0, 0.0) : r;
+}
+
 static inline vec2 separation_arm (const body *b, vec2 r)
 {
-  return b->shape.kind == CAROM_SHAPE_CIRCLE ? v2 (0.0, 0.0) : r;
+  return separation_arm_of (b->shape.kind == CAROM_SHAPE_CIRCLE, r);
 }
 
 /* The relative acceleration along n that uniform gravity gives the two
@@ -176,15 +181,24 @@ static inline double relative_fall (const solver_body *a, const solver_body *b, 
  * they then move by symplectic Euler, gravity_drift_velocity), and whether
  * it held them at detection (near, neither closing nor leaving fast: a
  * resting contact). A point that does not close within the step, or leaves
- * fast, leaves free flight exact. */
+ * fast, leaves free flight exact. As bits to give both bodies, from whether
+ * it is near (within the slop at detection), whether it meets within the
+ * step and its normal speed vn at detection. */
+static inline int32_t constrained_bits (int near, int meets, double vn, double threshold)
+{
+  int32_t bits = 0;
+  if (meets || (near && vn < threshold))
+    bits |= CONSTRAINED_ANY;
+  if (near && vn >= -threshold && vn < threshold)
+    bits |= CONSTRAINED_HELD;
+  return bits;
+}
+
 static inline void constrain_bodies (const contact *k, const contact_point *p, solver_body *a, solver_body *b, double vn,
                               const step_context *ctx)
 {
-  int32_t bits = 0, near = p->depth >= -k->slop;
-  if ((p->toi >= 0.0 && p->toi < ctx->dt) || (near && vn < ctx->restitution_threshold))
-    bits |= CONSTRAINED_ANY;
-  if (near && vn >= -ctx->restitution_threshold && vn < ctx->restitution_threshold)
-    bits |= CONSTRAINED_HELD;
+  int32_t bits = constrained_bits (p->depth >= -k->slop, p->toi >= 0.0 && p->toi < ctx->dt, vn,
+                                   ctx->restitution_threshold);
   a->constrained |= bits;
   b->constrained |= bits;
 }
