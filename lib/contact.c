@@ -106,6 +106,8 @@ static int32_t find_old (carom_world *world, int32_t a, int32_t b, int32_t pa, i
 }
 
 typedef struct pair_context {
+  int32_t a, b;          /* the bodies' slots, in the narrow phase's order */
+  xform xa, xb;          /* their poses */
   double restitution, friction, slop, margin;
   double margin_kept;    /* the margin of pieces that had a contact the step
                             before and do not bounce: as far as the bodies
@@ -388,10 +390,11 @@ static int clear_of_step (const carom_world *world, int32_t a, int32_t b, int32_
 
 /* The narrow phase for one pair of pieces, or last step's points moved
  * (reuse_manifold), then the contact. */
-static void pair_pieces (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, const pair_context *pc,
-                         xform xa, xform xb, manifold *m, int can_reuse)
+static void pair_pieces (carom_world *world, int32_t pa, int32_t pb, const pair_context *pc, manifold *m, int can_reuse)
 {
   contacts *c = &world->contacts;
+  int32_t a = pc->a, b = pc->b;
+  xform xa = pc->xa, xb = pc->xb;
   int32_t old = find_old (world, a, b, pa, pb);
   const contact *from = NULL;
   int clear = 0;
@@ -617,8 +620,10 @@ static void mix_materials (const carom_world *world, double ea, double fa, doubl
 
 /* A pair with a compound body: every two pieces whose bounding circles
  * come within the margin, each with its shapes' materials. */
-static void on_compound_pair (carom_world *world, int32_t a, int32_t b, pair_context *pc, xform xa, xform xb)
+static void on_compound_pair (carom_world *world, pair_context *pc)
 {
+  int32_t a = pc->a, b = pc->b;
+  xform xa = pc->xa, xb = pc->xb;
   const body *A = &world->bodies[a], *B = &world->bodies[b];
   convex_piece ca, cb;
   const convex_piece *P, *Q;
@@ -639,7 +644,7 @@ static void on_compound_pair (carom_world *world, int32_t a, int32_t b, pair_con
             continue;
           mix_materials (world, ea, fa, compound_b ? material (Q[j].restitution, B->restitution) : B->restitution,
                          compound_b ? material (Q[j].friction, B->friction) : B->friction, pc);
-          pair_pieces (world, a, b, i, j, pc, xa, xb, &m, pc->reuse_lin > 0.0 && P[i].count > 0 && Q[j].count > 0);
+          pair_pieces (world, i, j, pc, &m, pc->reuse_lin > 0.0 && P[i].count > 0 && Q[j].count > 0);
         }
     }
 }
@@ -774,15 +779,16 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
   pc.pieces_a = pc.pieces_b = NULL;
   xa.p = A->p, xa.q = A->q;
   xb.p = B->p, xb.q = B->q;
+  pc.a = a, pc.b = b, pc.xa = xa, pc.xb = xb;
 
   if (compound)
     {
-      on_compound_pair (world, a, b, &pc, xa, xb);
+      on_compound_pair (world, &pc);
       return;
     }
   if (A->shape.kind == CAROM_SHAPE_CIRCLE)
     {
-      pair_pieces (world, a, b, -1, -1, &pc, xa, xb, &m, 0);
+      pair_pieces (world, -1, -1, &pc, &m, 0);
       return;
     }
   if (B->shape.kind == CAROM_SHAPE_CIRCLE)
@@ -793,13 +799,13 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
           vec2 c = xform_apply (xa, p->center);
           if (v2_len (v2_sub (B->p, c)) > p->bound_radius + B->shape.radius + pc.margin)
             continue;
-          pair_pieces (world, a, b, i, -1, &pc, xa, xb, &m, 0);
+          pair_pieces (world, i, -1, &pc, &m, 0);
         }
       return;
     }
   if (world->def.narrow_phase == CAROM_NARROW_VERTEX_EDGE)
     {
-      pair_pieces (world, a, b, -1, -1, &pc, xa, xb, &m, 0);
+      pair_pieces (world, -1, -1, &pc, &m, 0);
       return;
     }
   for (i = 0; i < A->shape.piece_count; ++i)
@@ -812,7 +818,7 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
           vec2 qc = xform_apply (xb, q->center);
           if (v2_len (v2_sub (qc, pc_center)) > p->bound_radius + q->bound_radius + pc.margin)
             continue;
-          pair_pieces (world, a, b, i, j, &pc, xa, xb, &m, pc.reuse_lin > 0.0);
+          pair_pieces (world, i, j, &pc, &m, pc.reuse_lin > 0.0);
         }
     }
 }
