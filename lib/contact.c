@@ -741,7 +741,8 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
   }
   A = &world->bodies[a];
   B = &world->bodies[b];
-  if (!body_filters_pass (A, B) || joints_block_pair (world, a, b))
+  /* joints_block_pair only when both have a joint: most pairs have none */
+  if (!body_filters_pass (A, B) || (A->joint_head && B->joint_head && joints_block_pair (world, a, b)))
     return;
   if (A->sensor || B->sensor)
     {
@@ -756,7 +757,7 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
   pc.slop = world->def.slop * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   /* speculative margin: pairs that can close their gap within this step
    * are contacts now, so impacts are met before the bodies overlap */
-  swept = contact_pair_swept (world, a, b, ctx);
+  swept = body_pair_swept (A, world->broad.reach[a], B, world->broad.reach[b], ctx->dt, ctx->accel, ctx->continuous);
   if (reach >= 0.0)
     pc.margin = pc.slop + reach;
   else if (swept)
