@@ -606,7 +606,7 @@ static double material (double own, double fallback)
 /* The contact's restitution and friction from its two sides' (< 0: the
  * world default): the bouncier side wins (max); friction is the geometric
  * mean. */
-static void mix_materials (const carom_world *world, double ea, double fa, double eb, double fb, pair_context *pc)
+static inline void mix_materials (const carom_world *world, double ea, double fa, double eb, double fb, pair_context *pc)
 {
   ea = material (ea, world->def.restitution);
   eb = material (eb, world->def.restitution);
