@@ -139,72 +139,108 @@ static void remember_points (contact *k, xform xa, xform xb)
     }
 }
 
-/* Last step's points of a pair, moved with the bodies, if the pair's
- * relative pose is still within the tolerance of where they were computed:
- * a's copy of each point stays put in a's frame, b's moves with b, the
- * normal turns with the body whose face gave it (bit 31 of the feature:
- * b's), and the depth is measured again between the two copies. Returns 0
- * (compute afresh) otherwise. */
-static int reuse_manifold (const contact *old, xform xa, xform xb, double tol_lin, double tol_ang, manifold *m)
-{
-  xform now = xform_relative (xa, xb), then = old->computed_at;
-  rot2 turn;
-  int32_t i;
-  turn.c = then.q.c * now.q.c + then.q.s * now.q.s; /* now / then */
-  turn.s = then.q.c * now.q.s - then.q.s * now.q.c;
-  if (!(v2_len (v2_sub (now.p, then.p)) <= tol_lin && fabs (turn.s) <= tol_ang && turn.c > 0.0))
-    return 0;
-  m->count = old->count;
-  m->gap = INFINITY;
-  for (i = 0; i < old->count; ++i)
-    {
-      const contact_point *p = &old->points[i];
-      /* b's copy: back into b's frame as it was, out again as it is */
-      vec2 b_local = xform_apply (now, xform_apply_inv (then, p->local_b));
-      vec2 n = p->feature >> 31 ? rot2_apply (turn, p->local_normal) : p->local_normal;
-      manifold_point *mp = &m->points[i];
-      mp->depth = v2_dot (v2_sub (p->local_a, b_local), n);
-      mp->point = xform_apply (xa, v2_scale (v2_add (p->local_a, b_local), 0.5));
-      mp->normal = rot2_apply (xa.q, n);
-      mp->feature = p->feature;
-    }
-  return 1;
-}
-
-static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, int32_t pb, const manifold *m,
-                          const pair_context *pc, int32_t old, const contact *reused_from, xform xa, xform xb,
-                          int clear)
+/* A new contact of pieces pa, pb of the pair with room for n points in
+ * the pool, its fields but the points' set; NULL when memory ran out.
+ * old: last step's contact of the same pieces, or -1. */
+static inline contact *new_contact (carom_world *world, int32_t pa, int32_t pb, const pair_context *pc, int32_t old,
+                                    int32_t n, double gap, int clear)
 {
   contacts *c = &world->contacts;
   contact *k;
-  int32_t i, j;
-  if (m->count == 0)
-    return;
   if ((c->count == c->cap
        && !mem_reserve (&world->allocator, (void **) &c->list, &c->cap, c->count + 1, sizeof (contact)))
-      || (c->point_count + m->count > c->pool_cap
-          && !mem_reserve (&world->allocator, (void **) &c->pool, &c->pool_cap, c->point_count + m->count,
+      || (c->point_count + n > c->pool_cap
+          && !mem_reserve (&world->allocator, (void **) &c->pool, &c->pool_cap, c->point_count + n,
                            sizeof (contact_point))))
     {
       c->out_of_memory = 1;
-      return;
+      return NULL;
     }
   k = &c->list[c->count++];
   c->bouncy_found += pc->restitution > 0.0;
   /* valid until the pool grows again: contacts_update points every
    * contact at its points once the detection is done */
   k->points = c->pool + c->point_count;
-  k->a = a, k->b = b, k->piece_a = pa, k->piece_b = pb;
+  k->a = pc->a, k->b = pc->b, k->piece_a = pa, k->piece_b = pb;
   k->restitution = pc->restitution;
   k->friction = pc->friction;
   k->slop = pc->slop;
-  k->count = m->count;
+  k->count = n;
   k->fresh = old < 0;
-  k->gap = m->gap;
+  k->gap = gap;
   k->clear = clear;
   c->clear_count += clear;
   k->first_point = c->point_count;
-  c->point_count += m->count;
+  c->point_count += n;
+  return k;
+}
+
+/* Last step's contact `old` of pieces pa, pb, its points moved with the
+ * bodies, if the pair's relative pose is still within the tolerance of
+ * where they were computed: a's copy of each point stays put in a's frame,
+ * b's moves with b, the normal turns with the body whose face gave it (bit
+ * 31 of the feature: b's), and the depth is measured again between the two
+ * copies. Returns 0 (compute afresh) otherwise. */
+static int reuse_contact (carom_world *world, int32_t pa, int32_t pb, const pair_context *pc, int32_t old)
+{
+  const contact *o = &world->contacts.old[old];
+  xform xa = pc->xa, now = xform_relative (xa, pc->xb), then = o->computed_at;
+  rot2 turn;
+  contact *k;
+  int32_t i, j, count = o->count;
+  turn.c = then.q.c * now.q.c + then.q.s * now.q.s; /* now / then */
+  turn.s = then.q.c * now.q.s - then.q.s * now.q.c;
+  if (!(v2_len (v2_sub (now.p, then.p)) <= pc->reuse_lin && fabs (turn.s) <= pc->reuse_ang && turn.c > 0.0))
+    return 0;
+  k = new_contact (world, pa, pb, pc, old, count, INFINITY, 0);
+  if (!k)
+    return 1;
+  /* the pose and the points of the last computation carry on, so the
+   * tolerance bounds the drift from it, not from each step */
+  k->computed_at = then;
+  k->reused = 1;
+  for (i = 0; i < count; ++i)
+    {
+      const contact_point *p = &o->points[i];
+      contact_point *mp = &k->points[i];
+      /* b's copy: back into b's frame as it was, out again as it is */
+      vec2 b_local = xform_apply (now, xform_apply_inv (then, p->local_b));
+      vec2 n = p->feature >> 31 ? rot2_apply (turn, p->local_normal) : p->local_normal;
+      mp->depth = v2_dot (v2_sub (p->local_a, b_local), n);
+      mp->found = mp->depth;
+      mp->point = xform_apply (xa, v2_scale (v2_add (p->local_a, b_local), 0.5));
+      mp->normal = rot2_apply (xa.q, n);
+      k->gap = -mp->depth < k->gap ? -mp->depth : k->gap;
+      mp->feature = p->feature;
+      mp->push_impulse = mp->total_impulse = mp->approach = 0.0;
+      /* warm start: the same feature pair carries its impulses over, the
+       * first of the old points with this one's feature (this one at the
+       * latest), and the effective masses they were found with */
+      for (j = 0; j < i && o->points[j].feature != p->feature; ++j)
+        ;
+      mp->normal_impulse = o->points[j].normal_impulse;
+      mp->tangent_impulse = o->points[j].tangent_impulse;
+      mp->normal_mass = o->points[j].normal_mass;
+      mp->tangent_mass = o->points[j].tangent_mass;
+      mp->local_a = p->local_a;
+      mp->local_b = p->local_b;
+      mp->local_normal = p->local_normal;
+    }
+  return 1;
+}
+
+/* A freshly computed manifold m of pieces pa, pb as a contact. */
+static void add_manifold (carom_world *world, int32_t pa, int32_t pb, const manifold *m, const pair_context *pc,
+                          int32_t old, int clear)
+{
+  contacts *c = &world->contacts;
+  contact *k;
+  int32_t i, j;
+  if (m->count == 0)
+    return;
+  k = new_contact (world, pa, pb, pc, old, m->count, m->gap, clear);
+  if (!k)
+    return;
   for (i = 0; i < m->count; ++i)
     {
       contact_point *p = &k->points[i];
@@ -233,21 +269,7 @@ static void add_manifold (carom_world *world, int32_t a, int32_t b, int32_t pa, 
             break;
           }
     }
-  if (!reused_from)
-    remember_points (k, xa, xb);
-  else
-    {
-      /* the pose and the points of the last computation carry on, so the
-       * tolerance bounds the drift from it, not from each step */
-      k->computed_at = reused_from->computed_at;
-      k->reused = 1;
-      for (i = 0; i < k->count; ++i)
-        {
-          k->points[i].local_a = reused_from->points[i].local_a;
-          k->points[i].local_b = reused_from->points[i].local_b;
-          k->points[i].local_normal = reused_from->points[i].local_normal;
-        }
-    }
+  remember_points (k, pc->xa, pc->xb);
 }
 
 /* The convex pieces of a body for the narrow phase: a circle body's one
@@ -269,7 +291,7 @@ static int32_t body_pieces (const body *B, const convex_piece **pieces, convex_p
 /* Any two pieces, circles (count 0) or convex polygons, each placed by its
  * body's pose. A circle against a polygon is tested the polygon first and
  * the result turned round (the normal then turns with b's face: bit 31 of
- * the feature, see reuse_manifold). */
+ * the feature, see reuse_contact). */
 static void collide_pieces (const convex_piece *p, xform xa, const convex_piece *q, xform xb, double margin,
                             const vec2 *toward, manifold *m)
 {
@@ -389,18 +411,12 @@ static int clear_of_step (const carom_world *world, int32_t a, int32_t b, int32_
 }
 
 /* The narrow phase for one pair of pieces, or last step's points moved
- * (reuse_manifold), then the contact. */
+ * (reuse_contact), then the contact. */
 static void pair_pieces (carom_world *world, int32_t pa, int32_t pb, const pair_context *pc, manifold *m, int can_reuse)
 {
-  contacts *c = &world->contacts;
-  int32_t a = pc->a, b = pc->b;
-  xform xa = pc->xa, xb = pc->xb;
-  int32_t old = find_old (world, a, b, pa, pb);
-  const contact *from = NULL;
-  int clear = 0;
-  if (can_reuse && old >= 0 && reuse_manifold (&c->old[old], xa, xb, pc->reuse_lin, pc->reuse_ang, m))
-    from = &c->old[old];
-  else
+  int32_t old = find_old (world, pc->a, pc->b, pa, pb);
+  int clear;
+  if (!(can_reuse && old >= 0 && reuse_contact (world, pa, pb, pc, old)))
     /* Pieces in contact the step before look as far ahead as their bodies
      * can move: a box tipping over from its corner turns its far corner
      * down faster than the capped reach sees (body_reach_capped), and
@@ -408,11 +424,11 @@ static void pair_pieces (carom_world *world, int32_t pa, int32_t pb, const pair_
      * resting speculative point costs the solver little; a bouncy one
      * would take the time of impact's work for every corner nearby. */
     {
-      narrow_phase (world, a, b, pa, pb, pc->pieces_a, pc->pieces_b, xa, xb,
+      narrow_phase (world, pc->a, pc->b, pa, pb, pc->pieces_a, pc->pieces_b, pc->xa, pc->xb,
                     old >= 0 && pc->restitution == 0.0 ? pc->margin_kept : pc->margin, NULL, m);
-      clear = pc->bouncy_swept && m->count > 0 && clear_of_step (world, a, b, pa, pb, pc, xa, xb, m);
+      clear = pc->bouncy_swept && m->count > 0 && clear_of_step (world, pc->a, pc->b, pa, pb, pc, pc->xa, pc->xb, m);
+      add_manifold (world, pa, pb, m, pc, old, clear);
     }
-  add_manifold (world, a, b, pa, pb, m, pc, old, from, xa, xb, clear);
 }
 
 void contact_collide_at (const carom_world *world, const contact *k, xform xa, xform xb, double margin,
@@ -606,7 +622,8 @@ static double material (double own, double fallback)
 /* The contact's restitution and friction from its two sides' (< 0: the
  * world default): the bouncier side wins (max); friction is the geometric
  * mean. */
-static inline void mix_materials (const carom_world *world, double ea, double fa, double eb, double fb, pair_context *pc)
+static inline void mix_materials (const carom_world *world, double ea, double fa, double eb, double fb,
+                                  pair_context *pc)
 {
   ea = material (ea, world->def.restitution);
   eb = material (eb, world->def.restitution);
