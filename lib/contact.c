@@ -740,7 +740,6 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
   body *A, *B;
   pair_context pc;
   manifold m;
-  xform xa, xb;
   int32_t i, j;
   int swept;
   /* order: polygon before circle, else lower slot first, so the normal
@@ -795,9 +794,9 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   pc.pieces_a = pc.pieces_b = NULL;
-  xa.p = A->p, xa.q = A->q;
-  xb.p = B->p, xb.q = B->q;
-  pc.a = a, pc.b = b, pc.xa = xa, pc.xb = xb;
+  pc.a = a, pc.b = b;
+  pc.xa.p = A->p, pc.xa.q = A->q;
+  pc.xb.p = B->p, pc.xb.q = B->q;
 
   if (compound)
     {
@@ -814,7 +813,7 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
       for (i = 0; i < A->shape.piece_count; ++i)
         {
           const convex_piece *p = &A->shape.pieces[i];
-          vec2 c = xform_apply (xa, p->center);
+          vec2 c = xform_apply (pc.xa, p->center);
           if (v2_len (v2_sub (B->p, c)) > p->bound_radius + B->shape.radius + pc.margin)
             continue;
           pair_pieces (world, i, -1, &pc, &m, 0);
@@ -829,11 +828,11 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
   for (i = 0; i < A->shape.piece_count; ++i)
     {
       const convex_piece *p = &A->shape.pieces[i];
-      vec2 pc_center = xform_apply (xa, p->center);
+      vec2 pc_center = xform_apply (pc.xa, p->center);
       for (j = 0; j < B->shape.piece_count; ++j)
         {
           const convex_piece *q = &B->shape.pieces[j];
-          vec2 qc = xform_apply (xb, q->center);
+          vec2 qc = xform_apply (pc.xb, q->center);
           if (v2_len (v2_sub (qc, pc_center)) > p->bound_radius + q->bound_radius + pc.margin)
             continue;
           pair_pieces (world, i, j, &pc, &m, pc.reuse_lin > 0.0);
