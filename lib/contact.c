@@ -121,9 +121,11 @@ typedef struct pair_context {
                             that closes it (detect_pair): clear_of_step */
 } pair_context;
 
-/* Where each point of a freshly computed manifold lies, in a's frame: a's
- * copy of it (half the depth along the normal from the point, which the
- * narrow phase puts halfway), b's copy, and the normal. */
+/* Where each point of a freshly computed manifold lies: a's copy of it
+ * (half the depth along the normal from the point, which the narrow phase
+ * puts halfway) and the normal in a's frame, b's copy in b's frame (from
+ * a's, by the relative pose computed_at), which reuse_contact then needs
+ * to take out of b's frame only. */
 static void remember_points (contact *k, xform xa, xform xb)
 {
   int32_t i;
@@ -134,7 +136,7 @@ static void remember_points (contact *k, xform xa, xform xb)
       contact_point *p = &k->points[i];
       vec2 half = v2_scale (p->normal, 0.5 * p->depth);
       p->local_a = xform_apply_inv (xa, v2_add (p->point, half));
-      p->local_b = xform_apply_inv (xa, v2_sub (p->point, half));
+      p->local_b = xform_apply_inv (k->computed_at, xform_apply_inv (xa, v2_sub (p->point, half)));
       p->local_normal = rot2_apply_inv (xa.q, p->normal);
     }
 }
@@ -203,8 +205,8 @@ static int reuse_contact (carom_world *world, int32_t pa, int32_t pb, const pair
     {
       const contact_point *p = &o->points[i];
       contact_point *mp = &k->points[i];
-      /* b's copy: back into b's frame as it was, out again as it is */
-      vec2 b_local = xform_apply (now, xform_apply_inv (then, p->local_b));
+      /* b's copy, out of b's frame as it is now */
+      vec2 b_local = xform_apply (now, p->local_b);
       vec2 n = p->feature >> 31 ? rot2_apply (turn, p->local_normal) : p->local_normal;
       mp->depth = v2_dot (v2_sub (p->local_a, b_local), n);
       mp->found = mp->depth;

@@ -47,8 +47,8 @@ typedef struct contact_point {
                                              (contact_impacts) */
   double toi;                             /* apart and closing at detection:
                                              when it meets, else -1 */
-  /* where the point was last computed, in body a's frame: a's and b's
-   * copies of it and the normal (manifold reuse, contact.c) */
+  /* where the point was last computed: a's copy of it and the normal in
+   * body a's frame, b's copy in body b's (manifold reuse, contact.c) */
   vec2 local_a, local_b, local_normal;
 } contact_point;
 
