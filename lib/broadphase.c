@@ -191,14 +191,23 @@ static void sweep_boxes (carom_world *world, int32_t n, pair_callback fn, void *
        * window overlap is not predictable), then reported. */
       const sweep_entry e = bp->entries[i];
       const sweep_entry *f, *end = bp->entries + n;
-      int32_t hits = 0, k;
-      for (f = &bp->entries[i + 1]; f < end && f->lo <= e.hi; ++f)
-        {
-          bp->hits[hits] = f->slot;
-          hits += (f->lo2 <= e.hi2) & (f->hi2 >= e.lo2) & !(e.is_static & f->is_static);
-        }
-      for (k = 0; k < hits; ++k)
-        fn (world, e.slot, bp->hits[k], user);
+      int32_t *hit = bp->hits, *last = hit;
+      /* only a static entry's window needs the test that two static
+       * bodies make no pair: most entries are not */
+      if (e.is_static)
+        for (f = &bp->entries[i + 1]; f < end && f->lo <= e.hi; ++f)
+          {
+            *last = f->slot;
+            last += (f->lo2 <= e.hi2) & (f->hi2 >= e.lo2) & !f->is_static;
+          }
+      else
+        for (f = &bp->entries[i + 1]; f < end && f->lo <= e.hi; ++f)
+          {
+            *last = f->slot;
+            last += (f->lo2 <= e.hi2) & (f->hi2 >= e.lo2);
+          }
+      for (; hit < last; ++hit)
+        fn (world, e.slot, *hit, user);
     }
 }
 
