@@ -197,8 +197,8 @@ int sat_feature_face (uint32_t feature, int *side, int32_t *edge)
  * width stacked exactly have their corners on each other's side planes, and
  * rounding must not flip those points between "vertex" and "clipped" ids
  * from one step to the next (which would drop their warm-start impulse). */
-static int clip_segment (clip_vertex out[2], const clip_vertex in[2], vec2 n, double offset, uint32_t plane_id,
-                         double tol)
+static inline int clip_segment (clip_vertex out[2], const clip_vertex in[2], vec2 n, double offset,
+                                uint32_t plane_id, double tol)
 {
   int count = 0;
   double d0 = v2_dot (n, in[0].v) - offset, d1 = v2_dot (n, in[1].v) - offset;
