@@ -161,7 +161,7 @@ static inline contact *new_contact (carom_world *world, int32_t pa, int32_t pb, 
   k = &c->list[c->count++];
   c->bouncy_found += pc->restitution > 0.0;
   /* valid until the pool grows again: contacts_update points every
-   * contact at its points once the detection is done */
+   * contact at its points again if it did */
   k->points = c->pool + c->point_count;
   k->a = pc->a, k->b = pc->b, k->piece_a = pa, k->piece_b = pb;
   k->restitution = pc->restitution;
@@ -1073,9 +1073,13 @@ carom_status contacts_update (carom_world *world, const step_context *ctx)
       contacts_undo (world); /* the world is as it was */
       return CAROM_ERR_OUT_OF_MEMORY;
     }
+  /* the points of the contacts were placed in the pool as they were
+   * added: only a pool that grew since (moved), or drop_clear's moving
+   * them down, leaves them pointing elsewhere */
   if (c->clear_count > 0)
     drop_clear (world);
-  point_contacts (c);
+  if (c->clear_count > 0 || c->pool_cap != tpcap)
+    point_contacts (c);
   return CAROM_OK;
 }
 
