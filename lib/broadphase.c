@@ -30,8 +30,8 @@ void broadphase_destroy (carom_world *world)
 /* Boxes grow by the body's contact margin and by how far it can move in
  * this sub-step, so pairs that are apart but within the margin, or that will
  * meet before the next detection, are still reported. */
-static void fill_entry (broadphase *bp, sweep_entry *e, const body *b, int axis, double slop,
-                        const step_context *ctx)
+static inline void fill_entry (broadphase *bp, sweep_entry *e, const body *b, int axis, double slop,
+                               const step_context *ctx)
 {
   double r = body_reach_uncapped (b, ctx->dt, ctx->accel);
   double m = slop * b->shape.size + body_reach_capped (b, r, body_swept (b, r, ctx->dt, ctx->accel, ctx->continuous));
