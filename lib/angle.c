@@ -66,13 +66,18 @@ rot2 rot2_from_angle (double angle)
   r = ((angle - k * PIO2_1) - k * PIO2_2) - k * PIO2_3;
   c = cos_reduced (r), s = sin_reduced (r);
   /* turned by k quarter turns, k mod 4 (two's complement: -1 & 3 is 3):
-   * (c, s), (-s, c), (-c, -s), (s, -c), by selects (a body's quadrant
-   * is not predictable) */
+   * (c, s), (-s, c), (-c, -s), (s, -c), on the bits, without branches (a
+   * body's quadrant is not predictable): an odd k swaps c and s through
+   * a mask, and a negation is the sign bit flipped, as unary minus does */
   {
-    int odd = (int) (n & 1), neg_c = (int) ((n + 1) & 2), neg_s = (int) (n & 2);
-    double qc = select_double (odd, s, c), qs = select_double (odd, c, s);
-    q.c = select_double (neg_c, -qc, qc);
-    q.s = select_double (neg_s, -qs, qs);
+    uint64_t uc, us, swap, m = (uint64_t) 0 - (uint64_t) (n & 1);
+    memcpy (&uc, &c, sizeof uc);
+    memcpy (&us, &s, sizeof us);
+    swap = (uc ^ us) & m;
+    uc ^= swap ^ ((uint64_t) ((n + 1) & 2) << 62);
+    us ^= swap ^ ((uint64_t) (n & 2) << 62);
+    memcpy (&q.c, &uc, sizeof q.c);
+    memcpy (&q.s, &us, sizeof q.s);
   }
   return q;
 }
