@@ -102,20 +102,32 @@ void tunnel_guard (carom_world *world, const step_context *ctx)
   for (i = 0; i < c->count; ++i)
     {
       const contact *k = &c->list[i];
-      int side = world->bodies[k->a].type == CAROM_STATIC ? 0 : 1; /* which is static */
-      int32_t s = side ? k->b : k->a, d = side ? k->a : k->b;
-      const body *S = &world->bodies[s], *D = &world->bodies[d];
-      solver_body *m = &sb[d];
+      const body *S, *D;
+      solver_body *m;
+      int side; /* which is static */
       convex_piece circle;
       const convex_piece *P;
       xform xs, x0;
       vec2 axis;
-      double enter, lo = 0.0, hi, deep = BODY_FAST_FRACTION * D->shape.size;
+      double enter, lo = 0.0, hi, deep;
+      /* most contacts are between two bodies that are not static, and
+       * most of the rest's bodies moved little: those are left first */
+      if (world->bodies[k->a].type == CAROM_STATIC)
+        side = 0;
+      else if (world->bodies[k->b].type == CAROM_STATIC)
+        side = 1;
+      else
+        continue;
+      m = &sb[side ? k->a : k->b];
+      if (m->moves != MOVES_DYNAMIC)
+        continue;
+      S = &world->bodies[side ? k->b : k->a];
+      D = &world->bodies[side ? k->a : k->b];
+      deep = BODY_FAST_FRACTION * D->shape.size;
       /* how far its surface moved: less than `deep`, and it can neither
        * have gone that deep nor crossed (its centre lies about its size
        * inside its surface) */
-      if (S->type != CAROM_STATIC || m->moves != MOVES_DYNAMIC
-          || !(v2_len (m->dp) + fabs (m->da) * D->shape.bound_radius > deep))
+      if (!(v2_len (m->dp) + fabs (m->da) * D->shape.bound_radius > deep))
         continue;
       P = contact_piece (world, k, side, &circle);
       if (!P)
