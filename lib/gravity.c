@@ -29,9 +29,15 @@ void gravity_kick (carom_world *world, const step_context *ctx)
         }
   if (ctx->gravity.x == 0.0 && ctx->gravity.y == 0.0)
     return;
-  for (i = 0; i < world->slot_count; ++i)
-    if (sb[i].moves == MOVES_DYNAMIC)
-      sb[i].v = v2_add (sb[i].v, ctx->kick);
+  {
+    /* in locals: the stores to the velocities might alias them as far as
+     * the compiler knows */
+    vec2 kick = ctx->kick;
+    int32_t n = world->slot_count;
+    for (i = 0; i < n; ++i)
+      if (sb[i].moves == MOVES_DYNAMIC)
+        sb[i].v = v2_add (sb[i].v, kick);
+  }
 }
 
 /* Bodies held by joints move by leapfrog (RATTLE, with the joints'
