@@ -54,19 +54,23 @@ static void gather (carom_world *world)
                   : b->type == CAROM_DYNAMIC && !b->asleep ? MOVES_DYNAMIC
                   : b->type == CAROM_KINEMATIC ? MOVES_KINEMATIC
                                                : MOVES_NOT;
-      sb[i].v = b->v;
-      sb[i].w = b->w;
-      sb[i].dp = v2 (0.0, 0.0);
-      sb[i].pv = v2 (0.0, 0.0);
-      sb[i].pw = 0.0;
-      sb[i].row_end_v = sb[i].row_end_pv = 0.0;
-      sb[i].dq.c = 1.0, sb[i].dq.s = 0.0;
-      sb[i].da = 0.0;
-      sb[i].im = moves == MOVES_DYNAMIC ? b->inv_mass : 0.0;
-      sb[i].ii = moves == MOVES_DYNAMIC ? b->inv_inertia : 0.0;
+      /* built whole and stored at once: wide stores instead of one per
+       * field */
+      solver_body s;
+      s.v = b->v;
+      s.w = b->w;
+      s.dp = v2 (0.0, 0.0);
+      s.pv = v2 (0.0, 0.0);
+      s.pw = 0.0;
+      s.row_end_v = s.row_end_pv = 0.0;
+      s.dq.c = 1.0, s.dq.s = 0.0;
+      s.da = 0.0;
+      s.im = moves == MOVES_DYNAMIC ? b->inv_mass : 0.0;
+      s.ii = moves == MOVES_DYNAMIC ? b->inv_inertia : 0.0;
       /* a kinematic body moves with the velocity it was given, exactly */
-      sb[i].constrained = moves == MOVES_KINEMATIC;
-      sb[i].moves = moves;
+      s.constrained = moves == MOVES_KINEMATIC;
+      s.moves = moves;
+      sb[i] = s;
     }
   /* the inert body of the batches' unused lanes (contact_batch.h), and
    * the ground of joints to the world: never moved, never turned */
