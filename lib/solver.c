@@ -199,26 +199,32 @@ void solver_destroy (carom_world *world)
 
 void solver_contact_adjacency (carom_world *world, int32_t **start_out, int32_t **adj_out, int32_t **other_out)
 {
-  const contacts *c = &world->contacts;
+  /* the contacts in locals, and each next place read once: through the
+   * int32_t stores, which might alias them as far as the compiler knows,
+   * every use would reload them */
+  const contact *list = world->contacts.list;
+  int32_t count = world->contacts.count;
   int32_t n = world->slot_count, i;
   int32_t *start = world->solver_scratch + n, *adj = start + n + 1;
-  int32_t *other = world->solver_scratch + 4 * n + 1 + 3 * c->count;
+  int32_t *other = world->solver_scratch + 4 * n + 1 + 3 * count;
   for (i = 0; i <= n; ++i)
     start[i] = 0;
-  for (i = 0; i < c->count; ++i)
+  for (i = 0; i < count; ++i)
     {
-      start[c->list[i].a + 1]++;
-      start[c->list[i].b + 1]++;
+      start[list[i].a + 1]++;
+      start[list[i].b + 1]++;
     }
   for (i = 0; i < n; ++i)
     start[i + 1] += start[i];
-  for (i = 0; i < c->count; ++i)
+  for (i = 0; i < count; ++i)
     {
-      int32_t a = c->list[i].a, b = c->list[i].b;
-      other[start[a]] = b;
-      adj[start[a]++] = i;
-      other[start[b]] = a;
-      adj[start[b]++] = i;
+      int32_t a = list[i].a, b = list[i].b, e;
+      e = start[a]++;
+      other[e] = b;
+      adj[e] = i;
+      e = start[b]++;
+      other[e] = a;
+      adj[e] = i;
     }
   for (i = n; i > 0; --i)
     start[i] = start[i - 1];
