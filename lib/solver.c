@@ -97,11 +97,11 @@ static void integrate_positions (carom_world *world, const step_context *ctx)
       a = h * (b->w + b->pw);
       b->pv = v2 (0.0, 0.0);
       b->pw = 0.0;
-      b->da += a;
       c = b->dq.c - a * b->dq.s;
       s = b->dq.s + a * b->dq.c;
       n = 1.0 / sqrt (c * c + s * s);
       b->dq.c = c * n, b->dq.s = s * n;
+      b->da += a;
     }
 }
 
