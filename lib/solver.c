@@ -97,7 +97,10 @@ static void integrate_positions (carom_world *world, const step_context *ctx)
       a = h * (b->w + b->pw);
       b->pv = v2 (0.0, 0.0);
       b->pw = 0.0;
-      c = b->dq.c - a * b->dq.s;
+      /* c - a s written as c + (-a) s, the same bits (IEEE subtraction is
+       * the addition of the negated operand, and negation is exact): two
+       * like sums, which the compiler makes into fewer instructions */
+      c = b->dq.c + (-a) * b->dq.s;
       s = b->dq.s + a * b->dq.c;
       n = 1.0 / sqrt (c * c + s * s);
       b->dq.c = c * n, b->dq.s = s * n;
