@@ -26,10 +26,13 @@ void gravity_joint_kick (struct carom_world *world, const step_context *ctx);
  * x += (v - g h / 2) h, which is x0 + v0 t + g t^2 / 2 at every sub-step:
  * exact for uniform gravity. A body some constraint acts on moves with the
  * velocity the solver left it (symplectic Euler), so a body at rest stays
- * exactly at rest. */
-static inline vec2 gravity_drift_velocity (const step_context *ctx, const solver_body *b)
+ * exactly at rest. `back` is v2_scale (ctx->kick, -0.5), which a loop over
+ * the bodies holds in a local (the stores to the bodies might alias the
+ * context as far as the compiler knows: it would be loaded and multiplied
+ * for each). */
+static inline vec2 gravity_drift_velocity (vec2 back, const solver_body *b)
 {
-  return b->constrained ? b->v : v2_mad (b->v, -0.5, ctx->kick);
+  return b->constrained ? b->v : v2_add (b->v, back);
 }
 
 #endif

@@ -86,6 +86,7 @@ static void integrate_positions (carom_world *world, const step_context *ctx)
 {
   solver_body *sb = world->solver_bodies;
   double h = ctx->h;
+  vec2 back = v2_scale (ctx->kick, -0.5);
   int32_t i;
   for (i = 0; i < world->slot_count; ++i)
     {
@@ -93,7 +94,7 @@ static void integrate_positions (carom_world *world, const step_context *ctx)
       double a, c, s, n;
       if (!b->moves)
         continue;
-      b->dp = v2_mad (b->dp, h, v2_add (gravity_drift_velocity (ctx, b), b->pv));
+      b->dp = v2_mad (b->dp, h, v2_add (gravity_drift_velocity (back, b), b->pv));
       a = h * (b->w + b->pw);
       b->pv = v2 (0.0, 0.0);
       b->pw = 0.0;
