@@ -177,6 +177,46 @@ static inline contact *new_contact (carom_world *world, int32_t pa, int32_t pb, 
   return k;
 }
 
+/* Last step's points op[0 .. count) moved with the bodies into np (see
+ * reuse_contact): b's relative pose is now `now`, turned by `turn` from
+ * where they were computed, a's pose xa. Returns the least separation of
+ * the points. The two pools never overlap, which restrict tells the
+ * compiler: it would otherwise test their overlap on every call. */
+static inline double move_points (const contact_point *restrict op, contact_point *restrict np, int32_t count,
+                                  xform xa, xform now, rot2 turn)
+{
+  double gap = INFINITY;
+  int32_t i, j;
+  for (i = 0; i < count; ++i)
+    {
+      const contact_point *p = &op[i];
+      contact_point *mp = &np[i];
+      /* b's copy, out of b's frame as it is now */
+      vec2 b_local = xform_apply (now, p->local_b);
+      vec2 n = p->feature >> 31 ? rot2_apply (turn, p->local_normal) : p->local_normal;
+      mp->depth = v2_dot (v2_sub (p->local_a, b_local), n);
+      mp->found = mp->depth;
+      mp->point = xform_apply (xa, v2_scale (v2_add (p->local_a, b_local), 0.5));
+      mp->normal = rot2_apply (xa.q, n);
+      gap = -mp->depth < gap ? -mp->depth : gap;
+      mp->feature = p->feature;
+      mp->push_impulse = mp->total_impulse = mp->approach = 0.0;
+      /* warm start: the same feature pair carries its impulses over, the
+       * first of the old points with this one's feature (this one at the
+       * latest), and the effective masses they were found with */
+      for (j = 0; j < i && op[j].feature != p->feature; ++j)
+        ;
+      mp->normal_impulse = op[j].normal_impulse;
+      mp->tangent_impulse = op[j].tangent_impulse;
+      mp->normal_mass = op[j].normal_mass;
+      mp->tangent_mass = op[j].tangent_mass;
+      mp->local_a = p->local_a;
+      mp->local_b = p->local_b;
+      mp->local_normal = p->local_normal;
+    }
+  return gap;
+}
+
 /* Last step's contact `old` of pieces pa, pb, its points moved with the
  * bodies, if the pair's relative pose is still within the tolerance of
  * where they were computed: a's copy of each point stays put in a's frame,
@@ -189,45 +229,18 @@ static int reuse_contact (carom_world *world, int32_t pa, int32_t pb, const pair
   xform xa = pc->xa, now = xform_relative (xa, pc->xb), then = o->computed_at;
   rot2 turn;
   contact *k;
-  int32_t i, j, count = o->count;
   turn.c = then.q.c * now.q.c + then.q.s * now.q.s; /* now / then */
   turn.s = then.q.c * now.q.s - then.q.s * now.q.c;
   if (!(v2_len (v2_sub (now.p, then.p)) <= pc->reuse_lin && fabs (turn.s) <= pc->reuse_ang && turn.c > 0.0))
     return 0;
-  k = new_contact (world, pa, pb, pc, old, count, INFINITY, 0);
+  k = new_contact (world, pa, pb, pc, old, o->count, INFINITY, 0);
   if (!k)
     return 1;
   /* the pose and the points of the last computation carry on, so the
    * tolerance bounds the drift from it, not from each step */
   k->computed_at = then;
   k->reused = 1;
-  for (i = 0; i < count; ++i)
-    {
-      const contact_point *p = &o->points[i];
-      contact_point *mp = &k->points[i];
-      /* b's copy, out of b's frame as it is now */
-      vec2 b_local = xform_apply (now, p->local_b);
-      vec2 n = p->feature >> 31 ? rot2_apply (turn, p->local_normal) : p->local_normal;
-      mp->depth = v2_dot (v2_sub (p->local_a, b_local), n);
-      mp->found = mp->depth;
-      mp->point = xform_apply (xa, v2_scale (v2_add (p->local_a, b_local), 0.5));
-      mp->normal = rot2_apply (xa.q, n);
-      k->gap = -mp->depth < k->gap ? -mp->depth : k->gap;
-      mp->feature = p->feature;
-      mp->push_impulse = mp->total_impulse = mp->approach = 0.0;
-      /* warm start: the same feature pair carries its impulses over, the
-       * first of the old points with this one's feature (this one at the
-       * latest), and the effective masses they were found with */
-      for (j = 0; j < i && o->points[j].feature != p->feature; ++j)
-        ;
-      mp->normal_impulse = o->points[j].normal_impulse;
-      mp->tangent_impulse = o->points[j].tangent_impulse;
-      mp->normal_mass = o->points[j].normal_mass;
-      mp->tangent_mass = o->points[j].tangent_mass;
-      mp->local_a = p->local_a;
-      mp->local_b = p->local_b;
-      mp->local_normal = p->local_normal;
-    }
+  k->gap = move_points (o->points, k->points, o->count, xa, now, turn);
   return 1;
 }
 
