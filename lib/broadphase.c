@@ -169,7 +169,8 @@ static int32_t fill_all (carom_world *world, const step_context *ctx)
 static int reserve_entries (carom_world *world)
 {
   broadphase *bp = &world->broad;
-  return mem_reserve (&world->allocator, (void **) &bp->entries, &bp->cap, world->live_count, sizeof (sweep_entry))
+  /* one entry more than the bodies: the sweep's sentinel */
+  return mem_reserve (&world->allocator, (void **) &bp->entries, &bp->cap, world->live_count + 1, sizeof (sweep_entry))
          && mem_reserve (&world->allocator, (void **) &bp->scratch, &bp->scratch_cap, world->live_count,
                          sizeof (sweep_entry))
          && mem_reserve (&world->allocator, (void **) &bp->reach, &bp->reach_cap, world->slot_count, sizeof (double))
@@ -183,6 +184,10 @@ static void sweep_boxes (carom_world *world, int32_t n, pair_callback fn, void *
 {
   broadphase *bp = &world->broad;
   int32_t i;
+  /* past the last entry, one whose lo is no number: f->lo <= e.hi fails
+   * there whatever e.hi is, which ends every window without a test of the
+   * end (reserve_entries keeps room for it) */
+  bp->entries[n].lo = NAN;
   for (i = 0; i < n; ++i)
     {
       /* a copy, and a pointer walk: the compiler cannot tell that fn leaves
@@ -190,18 +195,18 @@ static void sweep_boxes (carom_world *world, int32_t n, pair_callback fn, void *
        * overlaps are noted without a branch (whether two boxes in the
        * window overlap is not predictable), then reported. */
       const sweep_entry e = bp->entries[i];
-      const sweep_entry *f, *end = bp->entries + n;
+      const sweep_entry *f;
       int32_t *hit = bp->hits, *last = hit;
       /* only a static entry's window needs the test that two static
        * bodies make no pair: most entries are not */
       if (e.is_static)
-        for (f = &bp->entries[i + 1]; f < end && f->lo <= e.hi; ++f)
+        for (f = &bp->entries[i + 1]; f->lo <= e.hi; ++f)
           {
             *last = f->slot;
             last += (f->lo2 <= e.hi2) & (f->hi2 >= e.lo2) & !f->is_static;
           }
       else
-        for (f = &bp->entries[i + 1]; f < end && f->lo <= e.hi; ++f)
+        for (f = &bp->entries[i + 1]; f->lo <= e.hi; ++f)
           {
             *last = f->slot;
             last += (f->lo2 <= e.hi2) & (f->hi2 >= e.lo2);
