@@ -246,6 +246,7 @@ static int sweep_fat (carom_world *world, int32_t n)
   int32_t i;
   bp->pairs_valid = 0;
   bp->pair_count = 0;
+  bp->entries[n].lo = NAN; /* the sentinel, as in sweep_boxes */
   for (i = 0; i < n; ++i)
     {
       double d = bp->entries[i].lo - bp->fat[bp->entries[i].slot].lo;
@@ -255,8 +256,8 @@ static int sweep_fat (carom_world *world, int32_t n)
     {
       const fat_box e = bp->fat[bp->entries[i].slot];
       int32_t is_static = bp->entries[i].is_static, hits = 0;
-      const sweep_entry *f, *end = bp->entries + n;
-      for (f = &bp->entries[i + 1]; f < end && f->lo - lead <= e.hi; ++f)
+      const sweep_entry *f;
+      for (f = &bp->entries[i + 1]; f->lo - lead <= e.hi; ++f)
         {
           const fat_box *g = &bp->fat[f->slot];
           bp->hits[hits] = (int32_t) (f - bp->entries);
