@@ -4,7 +4,8 @@
 #   make bench         install the peers if missing (tools/ensure-deps peers),
 #                      build, run everything, write docs/performance.md
 #   make bench-build   only build $(BUILD)/bench/*
-# Every engine's bench is compiled with $(OPT) (-O2 -g by default); Chipmunk
+# Every engine's bench is compiled with $(OPT) (-O2 -g by default), carom's
+# library with $(LIB_OPT) (-O3 -g) as the Makefile builds it; Chipmunk
 # and Box2D 2.4 are Debian's packaged libraries. Raw outputs and profiles
 # stay in $(BUILD)/bench/. Use a tree of your own: make BUILD=build-bench bench
 #
