@@ -937,14 +937,16 @@ CAROM_API carom_status carom_world_set_sleeping (carom_world *world,
  * Continuous collision: contacts are looked for as far ahead as the bodies
  * can close on each other in the step (speculative contacts), so a body
  * cannot pass through a thin wall, and an impact is solved at its time
- * within the step (exact bounce heights, docs/accuracy.md). A body that
- * moves more than half its size in a step always has it. Off by default for
- * the others, like every effect: then only pairs within 2% of the smaller
- * body's size ahead are found, which saves pairs in crowded scenes, and a
- * body that moves further than that in a step meets others overlapping (a
- * falling box bounces about 15% too high at dt 1/60), or passes a body
- * thinner than its travel. Bodies marked with carom_body_set_bullet have it
- * when the world's is off. Errors: NULL_ARGUMENT.
+ * within the step (exact bounce heights, docs/accuracy.md). On by default,
+ * the one effect that is: a world switches it off with enabled = 0. Off, a
+ * body that moves more than half its size in a step still has it; for the
+ * others only pairs within 2% of the smaller body's size ahead are found,
+ * which saves pairs and time-of-impact work in crowded fast scenes (the
+ * elastic gas steps about a fifth faster, docs/effects.md), and a body that
+ * moves further than that in a step meets others overlapping (a falling box
+ * bounces about 15% too high at dt 1/60), or passes a body thinner than its
+ * travel. Bodies marked with carom_body_set_bullet keep it when the world's
+ * is off. Errors: NULL_ARGUMENT.
  */
 CAROM_API carom_status carom_world_set_continuous (carom_world *world,
                                                    int32_t enabled);

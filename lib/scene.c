@@ -1114,7 +1114,7 @@ static carom_status scene_do_central (scene_parser *p)
 static carom_status scene_do_continuous (scene_parser *p)
 {
   if (p->num[0] != 0.0 && p->num[0] != 1.0)
-    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "continuous: 1 (on) or 0 (off, the default), got %g", p->num[0]);
+    return scene_fail (p, CAROM_ERR_BAD_ARGUMENT, "continuous: 1 (on, the default) or 0 (off), got %g", p->num[0]);
   p->continuous = p->num[0] != 0.0;
   return CAROM_OK;
 }
@@ -1166,8 +1166,8 @@ static carom_status scene_apply_effects (scene_parser *p)
     s = carom_world_set_damping (p->world, p->damping[0], p->damping[1]);
   if (s == CAROM_OK && p->sleeping)
     s = carom_world_set_sleeping (p->world, 1);
-  if (s == CAROM_OK && (p->continuous == 1 || (p->continuous < 0 && (p->named_effects & CAROM_EFFECT_CONTINUOUS))))
-    s = carom_world_set_continuous (p->world, 1);
+  if (s == CAROM_OK && p->continuous >= 0) /* on by default; naming it keeps it on */
+    s = carom_world_set_continuous (p->world, p->continuous);
   if (s != CAROM_OK)
     return scene_fail (p, s, "an effect was rejected: %s", carom_status_string (s));
   return CAROM_OK;

@@ -51,6 +51,7 @@ carom_status carom_world_init (carom_world **world, const carom_world_def *def)
   w->def = *def;
   w->gravity = v2 (def->gravity_x, def->gravity_y);
   w->solver_path = solver_path_best ();
+  w->continuous = 1; /* the one effect on by default: impacts at their time, no tunnelling */
   bodies_init (w);
   broadphase_init (w);
   contacts_init (w);

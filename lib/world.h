@@ -71,7 +71,7 @@ struct carom_world {
   } central;
   double damping_linear, damping_angular;
   int sleeping;
-  int continuous;      /* speculative contacts as far as bodies can travel (off by default) */
+  int continuous;      /* speculative contacts as far as bodies can travel (on by default) */
   int forces_active;   /* some body has a force or torque for the next update (force.c) */
   int32_t sensor_count; /* live sensor bodies */
   int seams_dirty;     /* static bodies changed: their internal edges are

@@ -51,7 +51,8 @@ static carom_world *busy_scene (int toggle)
     }
   if (toggle)
     {
-      /* every stage on, then off again */
+      /* every stage on, then off again (continuous collision, on by
+         default, the other way round) */
       carom_world_set_gravity (w, 0, -10);
       carom_world_set_central_gravity (w, 1, 2, 30, 0.5);
       carom_world_set_damping (w, 0.3, 0.2);
@@ -60,8 +61,8 @@ static carom_world *busy_scene (int toggle)
       carom_world_set_friction (w, 0.4);
       carom_body_set_fixed_rotation (w, first, 1);
       carom_body_set_bullet (w, first, 1);
-      carom_world_set_continuous (w, 1);
-      assert_int_not_equal (carom_world_get_effects (w), 0);
+      carom_world_set_continuous (w, 0);
+      assert_int_not_equal (carom_world_get_effects (w), CAROM_EFFECT_CONTINUOUS);
       carom_world_set_gravity (w, 0, 0);
       carom_world_set_central_gravity (w, 0, 0, 0, 0);
       carom_world_set_damping (w, 0, 0);
@@ -70,7 +71,7 @@ static carom_world *busy_scene (int toggle)
       carom_world_set_friction (w, 0);
       carom_body_set_fixed_rotation (w, first, 0);
       carom_body_set_bullet (w, first, 0);
-      carom_world_set_continuous (w, 0);
+      carom_world_set_continuous (w, 1);
     }
   return w;
 }
@@ -85,8 +86,8 @@ static void test_stages_switched_off_change_nothing (void **state)
   carom_world *plain = busy_scene (0), *toggled = busy_scene (1);
   int i;
   (void) state;
-  assert_int_equal (carom_world_get_effects (plain), 0);
-  assert_int_equal (carom_world_get_effects (toggled), 0);
+  assert_int_equal (carom_world_get_effects (plain), CAROM_EFFECT_CONTINUOUS);
+  assert_int_equal (carom_world_get_effects (toggled), CAROM_EFFECT_CONTINUOUS);
   for (i = 0; i < 300; ++i)
     {
       carom_world_update (plain, 1.0 / 60);
@@ -105,7 +106,13 @@ static void test_effects_are_reported_when_used (void **state)
                  | CAROM_EFFECT_FRICTION | CAROM_EFFECT_FIXED_ROTATION | CAROM_EFFECT_DAMPING | CAROM_EFFECT_SLEEPING
                  | CAROM_EFFECT_CONTINUOUS;
   (void) state;
-  assert_int_equal (carom_world_get_effects (w), 0); /* every effect off by default */
+  /* continuous collision alone is on by default */
+  assert_int_equal (carom_world_get_effects (w), CAROM_EFFECT_CONTINUOUS);
+  carom_world_set_continuous (w, 0);
+  assert_int_equal (carom_world_get_effects (w), 0);
+  carom_body_set_bullet (w, b, 1); /* a bullet has it for itself */
+  assert_int_equal (carom_world_get_effects (w), CAROM_EFFECT_CONTINUOUS);
+  carom_body_set_bullet (w, b, 0);
   carom_world_set_continuous (w, 1);
   assert_int_equal (carom_world_get_effects (w), CAROM_EFFECT_CONTINUOUS);
   carom_world_set_gravity (w, 0, -1);

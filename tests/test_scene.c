@@ -816,7 +816,7 @@ static void test_effects_statements (void **state)
   (void) state;
   e = carom_world_get_effects (w);
   assert_int_equal (e, CAROM_EFFECT_CENTRAL_GRAVITY | CAROM_EFFECT_DAMPING | CAROM_EFFECT_SLEEPING
-                           | CAROM_EFFECT_FIXED_ROTATION);
+                           | CAROM_EFFECT_FIXED_ROTATION | CAROM_EFFECT_CONTINUOUS);
   box = body_at (w, 0);
   for (i = 0; i < 60; ++i)
     carom_world_update (w, 1.0 / 60);
@@ -827,16 +827,20 @@ static void test_effects_statements (void **state)
   carom_world_destroy (w);
 }
 
-/* Continuous collision is off unless asked: `continuous 1` or naming it
- * switches it on, `continuous 0` keeps it off even when named (the scene is
- * then rejected, as for any effect named but unused), and `bullet` gives it
- * to one body (the effect is then reported, for that body). */
+/* Continuous collision is on unless switched off: `continuous 0` switches
+ * it off even when named (the scene is then rejected, as for any effect
+ * named but unused), `continuous 1` or naming it keeps it on, and `bullet`
+ * gives it to one body of a world without it (the effect is then reported,
+ * for that body). */
 static void test_continuous_statement (void **state)
 {
   static const char both[] = "continuous 0\neffects continuous\ncircle 0.5\n";
   carom_world *w = load ("circle 0.5\n");
   carom_scene_error err;
   (void) state;
+  assert_int_equal (carom_world_get_effects (w), CAROM_EFFECT_CONTINUOUS);
+  carom_world_destroy (w);
+  w = load ("continuous 0\ncircle 0.5\n");
   assert_int_equal (carom_world_get_effects (w), 0);
   carom_world_destroy (w);
   w = load ("continuous 1\ncircle 0.5\n");
