@@ -157,8 +157,13 @@ static int settings_default (acc_settings *set)
 {
   carom_world_def def;
   memset (set, 0, sizeof *set);
-  if (carom_world_def_init (&def, sizeof def) != CAROM_OK)
+  carom_world *fresh = NULL;
+  if (carom_world_def_init (&def, sizeof def) != CAROM_OK || carom_world_init (&fresh, &def) != CAROM_OK)
     return -1;
+  /* continuous collision is an effect, not a def field: a fresh world has
+     the library's default */
+  set->continuous = (carom_world_get_effects (fresh) & CAROM_EFFECT_CONTINUOUS) != 0;
+  carom_world_destroy (fresh);
   strcpy (set->knob, "default");
   strcpy (set->value, "balanced");
   set->substeps = def.substeps;
@@ -167,7 +172,6 @@ static int settings_default (acc_settings *set)
   set->slop = def.slop;
   set->manifold_tolerance = def.manifold_tolerance;
   set->narrow_phase = def.narrow_phase == CAROM_NARROW_VERTEX_EDGE;
-  set->continuous = 0;
   set->dt = 1.0 / 60.0;
   return 0;
 }
@@ -337,9 +341,9 @@ int main (int argc, char **argv)
       return 1;
     }
   printf ("defaults substeps=%d iterations=%d position_correction=%g slop=%g manifold_tolerance=%g narrow_phase=%s "
-          "dt=1/60\n",
+          "continuous=%s dt=1/60\n",
           w.def.substeps, w.def.iterations, w.def.position_correction, w.def.slop, w.def.manifold_tolerance,
-          w.def.narrow_phase ? "vertex-edge" : "SAT");
+          w.def.narrow_phase ? "vertex-edge" : "SAT", w.def.continuous ? "on" : "off");
 
   if (w.with_reference)
     {

@@ -208,7 +208,8 @@ statically. $vgv.
 ## The effects
 
 The update of a world is detect, solve and drift, plus the stages below. Each
-is off until a scene or the API asks for it, and a stage that is off returns at
+is off until a scene or the API asks for it, but continuous collision, which
+is on until it is switched off. A stage that is off returns at
 once (it tests its switch once per sub-step). \`carom_world_get_effects\` reports
 the active ones as bits of \`carom_effect\`; a scene file may name them with
 \`effects NAME...\` (docs/scenes.md).
@@ -222,7 +223,7 @@ the active ones as bits of \`carom_effect\`; a scene file may name them with
 | fixed-rotation | a body that never turns (infinite inertia, spin 0) | \`carom_body_set_fixed_rotation (w, id, 1)\` | body option \`fixed\` | no body is fixed |
 | damping | velocities decay as exp(-linear t), spins as exp(-angular t) | \`carom_world_set_damping (w, linear, angular)\` | \`damping LINEAR [ANGULAR]\` | both rates are 0 |
 | sleeping | bodies at rest for half a second stop being simulated until touched | \`carom_world_set_sleeping (w, 1)\` | \`effects sleeping\` | by default |
-| continuous | contacts of every body looked for as far ahead as the bodies can close on each other in the step, an inelastic pair as far as either goes if the other is stopped (otherwise only for bodies that move more than half their size in a step, which are always swept; others look 2% of their size ahead, but for pieces in contact the step before that do not bounce): no tunnelling, impacts solved at their time within the step | \`carom_world_set_continuous (w, 1)\`, \`carom_body_set_bullet (w, id, 1)\` | \`continuous 1\`, \`effects continuous\`, body option \`bullet\` | by default |
+| continuous | contacts of every body looked for as far ahead as the bodies can close on each other in the step, an inelastic pair as far as either goes if the other is stopped (otherwise only for bodies that move more than half their size in a step, which are always swept; others look 2% of their size ahead, but for pieces in contact the step before that do not bounce): no tunnelling, impacts solved at their time within the step | \`carom_world_set_continuous (w, 1)\`, \`carom_body_set_bullet (w, id, 1)\` | on by default; \`continuous 0\` switches it off, body option \`bullet\` keeps it for one body | \`carom_world_set_continuous (w, 0)\` (bodies fast for their size, and bullets, keep it) |
 
 Gravity (0, 0) and damping (0, 0) are *off* by definition (the stage returns at
 its first test), as is central gravity with gm = 0: there is no "on but zero"
@@ -240,7 +241,8 @@ work for it as for any body.
     restitution 1, friction 0;
   * **pyramid**: 20 rows of 1 x 1 boxes (210) on a static ground, gravity -10,
     friction 0.6, restitution 0.
-* Variants: **off** is the scene as defined; **on** switches one effect on (or
+* Variants: **off** is the scene as defined with every effect off, continuous
+  collision (on by default) switched off too; **on** switches one effect on (or
   changes it) so that it does something; **idle** switches it on with a value
   that does (next to) nothing; **stage-off** switches off an effect the scene
   itself uses (its cost is then the baseline over this row).

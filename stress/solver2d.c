@@ -788,7 +788,7 @@ static const struct
   { "Friction Ramp", friction_ramp, NULL },
   { "Overlap Recovery", overlap_recovery, NULL },
   { "Vertical Stack", vertical_stack, NULL },
-  { "Pyramid", pyramid, "top box's largest motion / side 2.68e+01 (bound 1e-02)" },
+  { "Pyramid", pyramid, "top box's largest motion / side 1.54e+00 (bound 1e-02)" },
   { "Rush", rush, NULL },
   { "Arch", arch, "top box's largest motion / height 3.63e-02 (bound 1e-02)" },
   { "Double Domino", double_domino, NULL },

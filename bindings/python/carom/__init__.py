@@ -434,9 +434,10 @@ class World:
         _check(_lib.carom_world_set_damping(self._handle(), linear, angular), "damping")
 
     def set_continuous(self, enabled):
-        """Continuous collision for every body (off by default; a body that
-        moves more than half its size in a step always has it): contacts
-        met before they overlap, impacts at their time within the step."""
+        """Continuous collision for every body (on by default; switched off,
+        a body that moves more than half its size in a step still has it):
+        contacts met before they overlap, impacts at their time within the
+        step."""
         _check(_lib.carom_world_set_continuous(self._handle(), 1 if enabled else 0), "continuous")
 
     def set_sleeping(self, enabled):

@@ -352,7 +352,9 @@ def test_missing_scene_file_raises_io(tmp_path):
 
 def test_effects_switch_on_by_use_and_damping_is_exact():
     with carom.World() as w:
-        assert w.effects == []  # every effect is off by default
+        assert w.effects == ["continuous"]  # the one effect on by default
+        w.set_continuous(False)
+        assert w.effects == []
         w.set_continuous(True)
         assert w.effects == ["continuous"]
         w.set_continuous(False)
