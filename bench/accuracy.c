@@ -7,7 +7,11 @@
  * 50 iterations). Prints "acc ..." lines (accuracy.h) for
  * bench/run-accuracy.sh.
  *
- * usage: accuracy [knobs=substeps,iterations,...] [reference=0|1]
+ * usage: accuracy [knobs=substeps,iterations,...] [measures=collision,gas,...]
+ *                 [reference=0|1]
+ * (knobs= and measures= keep to the settings and measures named, the
+ * defaults always run; the reference runs are the measures ref_pyramid and
+ * ref_rain.)
  * (ACC_DEBUG=1 in the environment prints the exact first contact of the
  * off-centre collision case.)
  * The defaults are read from carom_world_def_init, never restated here. */
@@ -176,33 +180,31 @@ static int settings_default (acc_settings *set)
   return 0;
 }
 
-#define N_MEASURES 16 /* the 14 measures, then the 2 reference runs */
+#define N_MEASURES 32 /* room for acc_measures, then the 2 reference runs */
 
 typedef struct sweep {
   acc_settings def;
   acc_result def_results[N_MEASURES];
-  double *ref[2]; /* pyramid, rain */
-  int with_reference;
+  double *ref[2]; /* pyramid, rain; NULL: not run */
+  const char *measures; /* measures=, NULL: all */
   int failures;
 } sweep;
 
-static const char *const ref_scenes[2] = { "pyramid", "rain" };
+static const char *const ref_scenes[2] = { "pyramid", "rain" }, *const ref_measures[2] = { "ref_pyramid", "ref_rain" };
 
 /* Run every measure for `set`; keep the results in `keep` (may be NULL). */
 static void run_setting (sweep *w, const acc_settings *set, acc_result *keep)
 {
-  int (*const measures[]) (const acc_engine *, const acc_settings *, acc_result *) = {
-    acc_collision, acc_projectile, acc_bounce, acc_drop, acc_gas, acc_momentum, acc_pyramid, acc_rain, acc_tunnel,
-    acc_pendulum, acc_double_pendulum, acc_chain, acc_hanging, acc_limit,
-  };
-  int i, n = (int) (sizeof measures / sizeof measures[0]);
+  int i, n = 0;
+  while (acc_measures[n].name)
+    ++n;
   for (i = 0; i < n + 2; ++i)
     {
       acc_result r;
       int rc;
-      if (i < n)
-        rc = measures[i](&carom_engine, set, &r);
-      else if (w->with_reference)
+      if (i < n && acc_wanted (w->measures, acc_measures[i].name))
+        rc = acc_measures[i].run (&carom_engine, set, &r);
+      else if (i >= n && w->ref[i - n])
         rc = acc_reference (&carom_engine, set, ref_scenes[i - n], w->ref[i - n], &r);
       else
         continue;
@@ -226,27 +228,12 @@ static void repeat_default (const sweep *w, const acc_settings *set)
       acc_print (&carom_engine, set, &w->def_results[i], "dup=1");
 }
 
-static int wanted (const char *list, const char *knob)
-{
-  const char *p = list;
-  size_t k = strlen (knob);
-  if (!list)
-    return 1;
-  while ((p = strstr (p, knob)))
-    {
-      if ((p == list || p[-1] == ',') && (p[k] == ',' || p[k] == '\0'))
-        return 1;
-      p += k;
-    }
-  return 0;
-}
-
 typedef enum knob_id { K_SUBSTEPS, K_ITERATIONS, K_CORRECTION, K_SLOP, K_MANIFOLD, K_NARROW, K_CONTINUOUS, K_DT } knob_id;
 
 static void knob (sweep *w, const char *only, knob_id k, const char *name, const double *values, int n)
 {
   int i;
-  if (!wanted (only, name))
+  if (!acc_wanted (only, name))
     return;
   for (i = 0; i < n; ++i)
     {
@@ -304,7 +291,7 @@ static void knob (sweep *w, const char *only, knob_id k, const char *name, const
 static void preset (sweep *w, const char *only, const char *name, int substeps, int iterations, int continuous)
 {
   acc_settings set = w->def;
-  if (!wanted (only, "preset"))
+  if (!acc_wanted (only, "preset"))
     return;
   strcpy (set.knob, "preset");
   strcpy (set.value, name);
@@ -321,18 +308,19 @@ int main (int argc, char **argv)
                       narrow[] = { 0, 1 }, continuous[] = { 0, 1 }, rate[] = { 30, 60, 120, 240 };
   const char *only = NULL;
   sweep w;
-  int i;
+  int i, with_reference = 1;
   memset (&w, 0, sizeof w);
-  w.with_reference = 1;
   for (i = 1; i < argc; ++i)
     if (strncmp (argv[i], "knobs=", 6) == 0)
       only = argv[i] + 6;
+    else if (strncmp (argv[i], "measures=", 9) == 0)
+      w.measures = argv[i] + 9;
     else if (strncmp (argv[i], "reference=", 10) == 0)
-      w.with_reference = atoi (argv[i] + 10);
+      with_reference = atoi (argv[i] + 10);
     else
       {
         fprintf (stderr, "usage: %s [knobs=substeps,iterations,position_correction,slop,manifold_tolerance,narrow_phase,continuous,dt,preset] "
-                         "[reference=0|1]\n", argv[0]);
+                         "[measures=collision,projectile,...,ref_pyramid,ref_rain] [reference=0|1]\n", argv[0]);
         return 2;
       }
   if (settings_default (&w.def) < 0)
@@ -345,7 +333,7 @@ int main (int argc, char **argv)
           w.def.substeps, w.def.iterations, w.def.position_correction, w.def.slop, w.def.manifold_tolerance,
           w.def.narrow_phase ? "vertex-edge" : "SAT", w.def.continuous ? "on" : "off");
 
-  if (w.with_reference)
+  if (with_reference)
     {
       /* the reference, and a check of it: the same at half its resolution */
       acc_settings ref = w.def, half;
@@ -359,6 +347,8 @@ int main (int argc, char **argv)
         {
           acc_result r;
           int count;
+          if (!acc_wanted (w.measures, ref_measures[i]))
+            continue;
           fprintf (stderr, "accuracy: reference %s\n", ref_scenes[i]);
           if (acc_trajectory (&carom_engine, &ref, ref_scenes[i], &w.ref[i], &count) < 0)
             {

@@ -37,7 +37,7 @@ typedef struct acc_settings {
   double position_correction, slop;
   double manifold_tolerance; /* carom_world_def.manifold_tolerance */
   int narrow_phase; /* 0: SAT, 1: vertex-edge (carom's enum values) */
-  int continuous;   /* carom_world_set_continuous (off by default) */
+  int continuous;   /* carom_world_set_continuous (on by default) */
   double dt;
 } acc_settings;
 
@@ -134,8 +134,18 @@ int acc_reference (const acc_engine *e, const acc_settings *set, const char *sce
 double acc_body_size (const bench_body *b);
 /* Print r as one "acc ..." line; `extra` (may be NULL) is appended. */
 void acc_print (const acc_engine *e, const acc_settings *set, const acc_result *r, const char *extra);
-/* Run every measure above except the reference runs and print their lines. */
-int acc_run_all (const acc_engine *e, const acc_settings *set);
+/* The measures by name ("collision", ... as their lines' measure=), every
+ * one above except the reference runs, ended by a NULL name. */
+typedef struct acc_measure {
+  const char *name;
+  int (*run) (const acc_engine *e, const acc_settings *set, acc_result *r);
+} acc_measure;
+extern const acc_measure acc_measures[];
+/* 1 when `name` is one of the comma-separated `list` (NULL: all). */
+int acc_wanted (const char *list, const char *name);
+/* Run the measures named in `only` (comma-separated; NULL: every one) and
+ * print their lines. */
+int acc_run_all (const acc_engine *e, const acc_settings *set, const char *only);
 
 #ifdef __cplusplus
 }

@@ -97,13 +97,16 @@ void b2_destroy (void *p)
 
 } // namespace
 
-int main (int argc, char **)
+int main (int argc, char **argv)
 {
-  if (argc > 1)
+  const char *only = NULL;
+  if (argc > 2 || (argc == 2 && std::strncmp (argv[1], "measures=", 9) != 0))
     {
-      std::fprintf (stderr, "usage: accuracy_box2d\n");
+      std::fprintf (stderr, "usage: accuracy_box2d [measures=collision,projectile,...]\n");
       return 2;
     }
+  if (argc == 2)
+    only = argv[1] + 9;
   static const acc_engine engine = {
     "box2d", "velocityIterations=8,positionIterations=3,sleep=off,dt=1/60", b2_create, b2_step, b2_state,
     b2_contacts, b2_destroy, b2_joint_force,
@@ -113,5 +116,5 @@ int main (int argc, char **)
   std::strcpy (set.knob, "peer");
   std::strcpy (set.value, "usual");
   set.dt = 1.0 / 60.0;
-  return acc_run_all (&engine, &set) < 0;
+  return acc_run_all (&engine, &set, only) < 0;
 }

@@ -132,15 +132,17 @@ int main (int argc, char **argv)
     b3_contacts, b3_destroy, b3_joint_force,
   };
   acc_settings set;
-  (void) argv;
-  if (argc > 1)
+  const char *only = NULL;
+  if (argc > 2 || (argc == 2 && strncmp (argv[1], "measures=", 9) != 0))
     {
-      fprintf (stderr, "usage: accuracy_box2d3\n");
+      fprintf (stderr, "usage: accuracy_box2d3 [measures=collision,projectile,...]\n");
       return 2;
     }
+  if (argc == 2)
+    only = argv[1] + 9;
   memset (&set, 0, sizeof set);
   strcpy (set.knob, "peer");
   strcpy (set.value, "usual");
   set.dt = 1.0 / 60.0;
-  return acc_run_all (&engine, &set) < 0;
+  return acc_run_all (&engine, &set, only) < 0;
 }

@@ -168,15 +168,17 @@ static const acc_engine chipmunk_engine = {
 int main (int argc, char **argv)
 {
   acc_settings set;
-  (void) argv;
-  if (argc > 1)
+  const char *only = NULL;
+  if (argc > 2 || (argc == 2 && strncmp (argv[1], "measures=", 9) != 0))
     {
-      fprintf (stderr, "usage: accuracy_chipmunk\n");
+      fprintf (stderr, "usage: accuracy_chipmunk [measures=collision,projectile,...]\n");
       return 2;
     }
+  if (argc == 2)
+    only = argv[1] + 9;
   memset (&set, 0, sizeof set);
   strcpy (set.knob, "peer");
   strcpy (set.value, "usual");
   set.dt = 1.0 / 60.0;
-  return acc_run_all (&chipmunk_engine, &set) < 0;
+  return acc_run_all (&chipmunk_engine, &set, only) < 0;
 }
