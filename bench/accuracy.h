@@ -92,6 +92,8 @@ int acc_tunnel (const acc_engine *e, const acc_settings *set, acc_result *r);
 int acc_drop (const acc_engine *e, const acc_settings *set, acc_result *r);
 /* A fast-spinning bar striking a wall with one corner, against eq. 3.23. */
 int acc_spin_bar (const acc_engine *e, const acc_settings *set, acc_result *r);
+/* Bodies sliding over a floor of touching static tiles: speed kept, no hop. */
+int acc_seams (const acc_engine *e, const acc_settings *set, acc_result *r);
 /* Joints (revolute, each engine's defaults): a pendulum's period, a double
  * pendulum's energy, a heavy chain's stretch, a hanging body's reaction, a
  * limit's overshoot. */
@@ -132,6 +134,7 @@ int acc_reference (const acc_engine *e, const acc_settings *set, const char *sce
 #define ACC_DROP_SECONDS 4.0
 #define ACC_DROP_HEIGHT 1.0
 #define ACC_SPIN_BAR_SECONDS 1.0
+#define ACC_SEAM_TILES 40
 
 /* The size of a body, as above. */
 double acc_body_size (const bench_body *b);

@@ -115,7 +115,7 @@ with its debug assertions on).
   bench's 2000) for 5 s, by when every row has landed; free-space collisions 200
   polygons for 5 s; reference runs 2 s; pendulum 40 s at each release, double
   pendulum 10 s, heavy chain 5 s at rest and 8 s swinging, hanging box 2 s,
-  limit 3 s; spinning bar 1 s at each spin. The whole sweep took $((END - START)) s for
+  limit 3 s; spinning bar 1 s at each spin; seams until across (at most 20 s). The whole sweep took $((END - START)) s for
   $REPEATS rounds.
 EOF
 } >"$OUT"
@@ -150,7 +150,7 @@ function label (row,    e, k, v) {
   return k " = " v
 }
 BEGIN {
-  ORDER = "collision projectile bounce drop gas momentum pyramid rain tunnel spin_bar pendulum double_pendulum chain hanging limit ref_pyramid ref_rain"
+  ORDER = "collision projectile bounce drop gas momentum pyramid rain tunnel spin_bar seams pendulum double_pendulum chain hanging limit ref_pyramid ref_rain"
   T["collision"] = "Two-body elastic collision (closed form, eq. 3.23)"
   D["collision"] = "Two equal 1 × 1 boxes head-on (they must swap velocities), and a spinning 1 × 0.6 box hitting a spinning pentagon with a corner, off-centre (e = 1, no friction, no gravity). The exact answer is computed in the bench: the time of first contact by scanning and bisection of the free flight, its point and normal, then the eq. 3.23 impulse. Error: sqrt(Σ |Δv|² + (ρ Δω)²) over the closing speed, ρ the radius of gyration, against the exact velocities and spins after the impact; energy change: kinetic energy after over before, minus 1."
   L["collision"] = "headon_err:head-on error,offcentre_err:off-centre error,energy_change:energy change (off-centre)"
@@ -181,6 +181,9 @@ BEGIN {
   T["spin_bar"] = "Spinning bar against a wall (closed form, eq. 3.23)"
   D["spin_bar"] = "A 4 × 0.05 bar (density 1) spinning at 60 and at 200 rad/s (its ends at 120 and 400 m/s: 2 and 6.7 m per 1/60 s step) thrown at 2 m/s at a static wall, starting at 0.3 rad and 0.1 m from it, e = 1, no friction, no gravity: it strikes the wall with one corner and flies off. The exact answer is computed in the bench from the start: the time the first corner touches by scanning and bisection of the free flight, then eq. 3.23 for that single point against the immovable wall (J = −(1 + e) v_n / (1/m + (r × n)²/I)); the start is one where the bar, flown on with those velocities, never touches again. Error after 1 s: (|Δv_x| + |Δv_y| + ρ |Δω|) / (|v_x′| + ρ |ω′|), ρ the radius of gyration, against the closed form\047s v′ and ω′. Depth: the farthest any corner was past the wall\047s face after any step, over the bar\047s size (4); crossed: the runs (of 2) in which the bar\047s centre went past the face. The cost is the 200 rad/s run\047s."
   L["spin_bar"] = "err_60:error at 60 rad/s,err_200:error at 200 rad/s,depth:deepest corner past the face / size,crossed:crossed (of 2)"
+  T["seams"] = "Seams: sliding over floor tiles"
+  D["seams"] = "A floor of 40 touching static 1 × 1 boxes (floor tiles), gravity 10 down, no friction, e = 0; a circle (radius 0.1) and a 0.2 × 0.2 box slide over it at 5 m/s from the middle of the first tile until past the 39th (at most 20 s). The floor is one flat surface: the body should keep v_x = 5 and its height throughout; a ghost collision with a tile\047s side at a seam slows, stops or throws it. Each body starts at its resting height, where the same body comes to rest on the floor in 1 s (so a skin or an allowed overlap is not a rise). Speed: the largest |v_x − 5| / 5 after any step; rise: the largest height above the resting height after any step, over the body\047s size (0.2); stuck: the bodies (of 2) that did not get across. The cost is the box\047s run."
+  L["seams"] = "circle_speed:circle speed change,circle_rise:circle rise / size,box_speed:box speed change,box_rise:box rise / size,stuck:stuck (of 2)"
   T["pendulum"] = "Pendulum period (revolute joint)"
   D["pendulum"] = "A small disc (radius 0.05) on a 1 m revolute joint to a fixed point (the joint at the pivot, 1 m from the disc\047s centre), let go at rest 10° and 90° from the vertical, 40 s: the period from the upward zero crossings of the disc\047s x (linear between steps: the swing is fastest there, its acceleration 0) against the exact 4 √(I / (m g d)) K(sin(θ0/2)), I about the pivot from the engine\047s own mass and inertia; signed relative error. Amplitude: the swing\047s amplitude at the end (from its energy) over θ0, minus 1 (negative: the joint took energy). Rod stretch: the largest |distance to the pivot − 1| after any step of either run. The cost is the 90° run\047s."
   L["pendulum"] = "period_err_10:period error 10°,period_err_90:period error 90°,amplitude_10:amplitude change 10°,amplitude_90:amplitude change 90°,stretch:rod stretch"
@@ -251,7 +254,7 @@ END {
   }
 
   # ---- the needs: one error each, for the plot and the advice
-  NN = split ("collision:offcentre_err:off-centre collision velocity error;bounce:box_err:bounce height error (box);gas:energy_drift:gas energy drift (absolute) over 2000/60 s;pyramid:top_drift:pyramid top box moved / size (10 s);rain:pen_p99:rain 99th-pct penetration / size;gas:pen_max:gas deepest penetration / size (2000/60 s);ref_pyramid:rms:pyramid RMS distance from reference / size;pendulum:period_err_90:pendulum period error at 90 degrees (absolute);double_pendulum:energy_err:double pendulum largest energy error / budget;chain:swing_gap:heavy chain swinging, joint gaps / length;drop:rise_8:box dropped on a column of 8, fastest rise / impact speed;spin_bar:err_200:bar spinning at 200 rad/s striking a wall, velocity error", NEED, ";")
+  NN = split ("collision:offcentre_err:off-centre collision velocity error;bounce:box_err:bounce height error (box);gas:energy_drift:gas energy drift (absolute) over 2000/60 s;pyramid:top_drift:pyramid top box moved / size (10 s);rain:pen_p99:rain 99th-pct penetration / size;gas:pen_max:gas deepest penetration / size (2000/60 s);ref_pyramid:rms:pyramid RMS distance from reference / size;pendulum:period_err_90:pendulum period error at 90 degrees (absolute);double_pendulum:energy_err:double pendulum largest energy error / budget;chain:swing_gap:heavy chain swinging, joint gaps / length;drop:rise_8:box dropped on a column of 8, fastest rise / impact speed;spin_bar:err_200:bar spinning at 200 rad/s striking a wall, velocity error;seams:box_speed:box sliding over floor tiles, largest speed change", NEED, ";")
   NNAME[1] = "Collisions that spin off right (off-centre impacts)"
   NNAME[2] = "Bounces of the right height"
   NNAME[3] = "Elastic scenes that keep their energy"
@@ -264,6 +267,7 @@ END {
   NNAME[10] = "Joints that hold a heavy load"
   NNAME[11] = "Inelastic impacts that throw nothing up"
   NNAME[12] = "Fast-spinning bodies that strike right"
+  NNAME[13] = "Tiled floors without bumps (seams)"
   nknob = split ("substeps iterations position_correction slop manifold_tolerance narrow_phase continuous dt", KN, " ")
   for (n = 1; n <= NN; ++n) {
     split (NEED[n], f, ":"); m = f[1]; k = f[2]; title = f[3]
