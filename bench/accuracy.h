@@ -94,6 +94,8 @@ int acc_drop (const acc_engine *e, const acc_settings *set, acc_result *r);
 int acc_spin_bar (const acc_engine *e, const acc_settings *set, acc_result *r);
 /* Bodies sliding over a floor of touching static tiles: speed kept, no hop. */
 int acc_seams (const acc_engine *e, const acc_settings *set, acc_result *r);
+/* Newton's cradle: rows of equal touching balls struck at one end. */
+int acc_cradle (const acc_engine *e, const acc_settings *set, acc_result *r);
 /* Joints (revolute, each engine's defaults): a pendulum's period, a double
  * pendulum's energy, a heavy chain's stretch, a hanging body's reaction, a
  * limit's overshoot. */
@@ -135,6 +137,7 @@ int acc_reference (const acc_engine *e, const acc_settings *set, const char *sce
 #define ACC_DROP_HEIGHT 1.0
 #define ACC_SPIN_BAR_SECONDS 1.0
 #define ACC_SEAM_TILES 40
+#define ACC_CRADLE_SECONDS 1.0
 
 /* The size of a body, as above. */
 double acc_body_size (const bench_body *b);

@@ -115,7 +115,8 @@ with its debug assertions on).
   bench's 2000) for 5 s, by when every row has landed; free-space collisions 200
   polygons for 5 s; reference runs 2 s; pendulum 40 s at each release, double
   pendulum 10 s, heavy chain 5 s at rest and 8 s swinging, hanging box 2 s,
-  limit 3 s; spinning bar 1 s at each spin; seams until across (at most 20 s). The whole sweep took $((END - START)) s for
+  limit 3 s; spinning bar 1 s at each spin; seams until across (at most 20 s);
+  Newton's cradle 1 s. The whole sweep took $((END - START)) s for
   $REPEATS rounds.
 EOF
 } >"$OUT"
@@ -150,7 +151,7 @@ function label (row,    e, k, v) {
   return k " = " v
 }
 BEGIN {
-  ORDER = "collision projectile bounce drop gas momentum pyramid rain tunnel spin_bar seams pendulum double_pendulum chain hanging limit ref_pyramid ref_rain"
+  ORDER = "collision projectile bounce drop gas momentum pyramid rain tunnel spin_bar seams cradle pendulum double_pendulum chain hanging limit ref_pyramid ref_rain"
   T["collision"] = "Two-body elastic collision (closed form, eq. 3.23)"
   D["collision"] = "Two equal 1 × 1 boxes head-on (they must swap velocities), and a spinning 1 × 0.6 box hitting a spinning pentagon with a corner, off-centre (e = 1, no friction, no gravity). The exact answer is computed in the bench: the time of first contact by scanning and bisection of the free flight, its point and normal, then the eq. 3.23 impulse. Error: sqrt(Σ |Δv|² + (ρ Δω)²) over the closing speed, ρ the radius of gyration, against the exact velocities and spins after the impact; energy change: kinetic energy after over before, minus 1."
   L["collision"] = "headon_err:head-on error,offcentre_err:off-centre error,energy_change:energy change (off-centre)"
@@ -184,6 +185,9 @@ BEGIN {
   T["seams"] = "Seams: sliding over floor tiles"
   D["seams"] = "A floor of 40 touching static 1 × 1 boxes (floor tiles), gravity 10 down, no friction, e = 0; a circle (radius 0.1) and a 0.2 × 0.2 box slide over it at 5 m/s from the middle of the first tile until past the 39th (at most 20 s). The floor is one flat surface: the body should keep v_x = 5 and its height throughout; a ghost collision with a tile\047s side at a seam slows, stops or throws it. Each body starts at its resting height, where the same body comes to rest on the floor in 1 s (so a skin or an allowed overlap is not a rise). Speed: the largest |v_x − 5| / 5 after any step; rise: the largest height above the resting height after any step, over the body\047s size (0.2); stuck: the bodies (of 2) that did not get across. The cost is the box\047s run."
   L["seams"] = "circle_speed:circle speed change,circle_rise:circle rise / size,box_speed:box speed change,box_rise:box rise / size,stuck:stuck (of 2)"
+  T["cradle"] = "Newton\047s cradle"
+  D["cradle"] = "Rows of 5 and of 3 equal touching balls (radius 0.1), e = 1, no friction, no gravity, the first moving at v0 = 1 m/s into the others at rest, 1 s. The closed form is the sequential model (pairwise eq. 3.23 impacts between neighbours, left to right): each ball stops and passes its velocity on, so only the last leaves, at v0; a solver that meets the touching row as one simultaneous impact spreads the velocity over the row instead (momentum and energy are kept either way). Rest: the largest |v| of the balls that should be at rest, over v0; last: |v − v0| of the last ball, over v0. The cost is the 5\047s run."
+  L["cradle"] = "rest_5:largest |v| at rest / v0 (5 balls),last_5:last ball error (5 balls),rest_3:largest |v| at rest / v0 (3 balls),last_3:last ball error (3 balls)"
   T["pendulum"] = "Pendulum period (revolute joint)"
   D["pendulum"] = "A small disc (radius 0.05) on a 1 m revolute joint to a fixed point (the joint at the pivot, 1 m from the disc\047s centre), let go at rest 10° and 90° from the vertical, 40 s: the period from the upward zero crossings of the disc\047s x (linear between steps: the swing is fastest there, its acceleration 0) against the exact 4 √(I / (m g d)) K(sin(θ0/2)), I about the pivot from the engine\047s own mass and inertia; signed relative error. Amplitude: the swing\047s amplitude at the end (from its energy) over θ0, minus 1 (negative: the joint took energy). Rod stretch: the largest |distance to the pivot − 1| after any step of either run. The cost is the 90° run\047s."
   L["pendulum"] = "period_err_10:period error 10°,period_err_90:period error 90°,amplitude_10:amplitude change 10°,amplitude_90:amplitude change 90°,stretch:rod stretch"
@@ -254,7 +258,7 @@ END {
   }
 
   # ---- the needs: one error each, for the plot and the advice
-  NN = split ("collision:offcentre_err:off-centre collision velocity error;bounce:box_err:bounce height error (box);gas:energy_drift:gas energy drift (absolute) over 2000/60 s;pyramid:top_drift:pyramid top box moved / size (10 s);rain:pen_p99:rain 99th-pct penetration / size;gas:pen_max:gas deepest penetration / size (2000/60 s);ref_pyramid:rms:pyramid RMS distance from reference / size;pendulum:period_err_90:pendulum period error at 90 degrees (absolute);double_pendulum:energy_err:double pendulum largest energy error / budget;chain:swing_gap:heavy chain swinging, joint gaps / length;drop:rise_8:box dropped on a column of 8, fastest rise / impact speed;spin_bar:err_200:bar spinning at 200 rad/s striking a wall, velocity error;seams:box_speed:box sliding over floor tiles, largest speed change", NEED, ";")
+  NN = split ("collision:offcentre_err:off-centre collision velocity error;bounce:box_err:bounce height error (box);gas:energy_drift:gas energy drift (absolute) over 2000/60 s;pyramid:top_drift:pyramid top box moved / size (10 s);rain:pen_p99:rain 99th-pct penetration / size;gas:pen_max:gas deepest penetration / size (2000/60 s);ref_pyramid:rms:pyramid RMS distance from reference / size;pendulum:period_err_90:pendulum period error at 90 degrees (absolute);double_pendulum:energy_err:double pendulum largest energy error / budget;chain:swing_gap:heavy chain swinging, joint gaps / length;drop:rise_8:box dropped on a column of 8, fastest rise / impact speed;spin_bar:err_200:bar spinning at 200 rad/s striking a wall, velocity error;seams:box_speed:box sliding over floor tiles, largest speed change;cradle:rest_5:Newton cradle of 5, largest speed of the balls at rest / v0", NEED, ";")
   NNAME[1] = "Collisions that spin off right (off-centre impacts)"
   NNAME[2] = "Bounces of the right height"
   NNAME[3] = "Elastic scenes that keep their energy"
@@ -268,6 +272,7 @@ END {
   NNAME[11] = "Inelastic impacts that throw nothing up"
   NNAME[12] = "Fast-spinning bodies that strike right"
   NNAME[13] = "Tiled floors without bumps (seams)"
+  NNAME[14] = "Rows of touching bodies struck at one end (Newton\047s cradle)"
   nknob = split ("substeps iterations position_correction slop manifold_tolerance narrow_phase continuous dt", KN, " ")
   for (n = 1; n <= NN; ++n) {
     split (NEED[n], f, ":"); m = f[1]; k = f[2]; title = f[3]
