@@ -294,11 +294,11 @@ END {
   }
 
   printf "\n## Which setting to pick for which need\n\n"
-  printf "Derived by bench/run-accuracy.sh from the tables above at every run (cost: ms per 1/60 s of simulated time; error: the need\047s measure, absolute value). \"2× better\" is the cheapest measured carom setting whose error is at most half the default\047s. A knob has \"no effect\" when every value of it stays within 5%% of the default\047s error.\n\n"
+  printf "Derived by bench/run-accuracy.sh from the tables above at every run (cost: ms per 1/60 s of simulated time; error: the need\047s measure, absolute value). \"2× better\" is the cheapest measured carom setting whose error is at most half the default\047s (none when the default\047s is below 1e-12, rounding level). A knob has \"no effect\" when every value of it stays within 5%% (or 1e-12) of the default\047s error.\n\n"
   printf "| need | measure | balanced | fast | precise | cheapest 2× better than balanced | lowest measured | Chipmunk 7 | Box2D 2.4 | Box2D v3 |\n|---|---|---|---|---|---|---|---|---|---|\n"
   for (n = 1; n <= NN; ++n) {
     split (NEED[n], f, ":"); m = f[1]; k = f[2]; title = f[3]
-    def = ""; best = ""; cheap = ""; fast = "-"; prec = "-"; cm = "-"; bx = "-"; b3 = "-"
+    def = ""; defcell = "-"; defcost = 1; best = ""; cheap = ""; fast = "-"; prec = "-"; cm = "-"; bx = "-"; b3 = "-"
     for (row = 1; row <= nrow; ++row) {
       if (R_measure[row] != m || R_dup[row] || R_failed[row]) continue
       err = absv (V[row, k]); cost = MFm[row]
@@ -317,7 +317,9 @@ END {
       err = absv (V[row, k])
       if (err <= def / 2 && (cheap == "" || MFm[row] < MFm[cheap])) cheap = row
     }
-    cheapcell = cheap == "" ? "none measured" : sprintf ("%s: %s at %s ms (×%.1f the time)", label(cheap), num (absv (V[cheap, k])), ms(MFm[cheap]), MFm[cheap] / defcost)
+    # an error at rounding level (1e-12, as in the plot) has nothing better
+    if (def != "" && def <= 1e-12) cheapcell = "none: the default\047s error is at rounding level"
+    else cheapcell = cheap == "" ? "none measured" : sprintf ("%s: %s at %s ms (×%.1f the time)", label(cheap), num (absv (V[cheap, k])), ms(MFm[cheap]), MFm[cheap] / defcost)
     bestcell = sprintf ("%s: %s at %s ms", label(bestrow), num (absv (V[bestrow, k])), ms(MFm[bestrow]))
     printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", NNAME[n], title, defcell, fast, prec, cheapcell, bestcell, cm, bx, b3
     # knobs without effect
@@ -327,13 +329,13 @@ END {
       for (row = 1; row <= nrow; ++row)
         if (R_measure[row] == m && R_knob[row] == KN[ki] && !R_failed[row]) {
           any = 1
-          if (absv (absv (V[row, k]) - def) > 0.05 * def) flat = 0
+          if (absv (absv (V[row, k]) - def) > 0.05 * def && absv (absv (V[row, k]) - def) > 1e-12) flat = 0
         }
       if (any && flat) noeff = noeff (noeff == "" ? "" : ", ") KN[ki]
     }
     NOEFF[n] = noeff
   }
-  printf "\nKnobs with no effect on each need (every value within 5%% of the default\047s error):\n\n"
+  printf "\nKnobs with no effect on each need (every value within 5%% or 1e-12 of the default\047s error):\n\n"
   for (n = 1; n <= NN; ++n) printf "* %s: %s.\n", NNAME[n], NOEFF[n] == "" ? "none" : NOEFF[n]
 }' >>"$OUT"
 

@@ -7,6 +7,11 @@
 # `make bench` runs it too (the dependency below), before its own benches.
 # Raw outputs stay in $(BUILD)/accuracy/. Use a tree of your own:
 #   make BUILD=build-acc bench-accuracy
+# One part of the map, without the whole sweep: every program takes
+# measures=NAME,... (the names of the lines' measure=), carom's also
+# knobs=NAME,... (its defaults always run) and reference=0, e.g.
+#   $(BUILD)/accuracy/accuracy knobs=continuous measures=cradle reference=0
+#   $(BUILD)/accuracy/accuracy_box2d measures=cradle
 # Peer binaries are built only when their headers exist; the check runs in
 # the sub-make, after ensure-deps may have installed them. Objects and the
 # link rule are the benches' own (mk/bench.mk).
