@@ -323,6 +323,13 @@ int main (int argc, char **argv)
                          "[measures=collision,projectile,...,ref_pyramid,ref_rain] [reference=0|1]\n", argv[0]);
         return 2;
       }
+  for (i = 0; acc_measures[i].name; ++i)
+    ;
+  if (i + 2 > N_MEASURES)
+    {
+      fprintf (stderr, "accuracy: %d measures: raise N_MEASURES\n", i);
+      return 1;
+    }
   if (settings_default (&w.def) < 0)
     {
       fprintf (stderr, "accuracy: carom_world_def_init failed\n");
