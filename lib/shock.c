@@ -126,17 +126,21 @@ static void mark_loaded (carom_world *world, const int32_t *order, int32_t count
 /* What the pass reads of a contact it may hold, copied once per step in
  * level order (contact_shock_prepare), so the passes stream through it:
  * which body is the upper one, and its share of the point's effective mass
- * with the lower body held still. */
+ * with the lower body held still. The impulse raises vn: +x n on b, or
+ * -x n on a; its sign is folded into im_up and ang (x times -1 is exact,
+ * so the upper body moves by the same bits either way). */
 typedef struct shock_point {
   vec2 normal, ra, rb;
   double adjusted, rn_a, rn_b;
   double mass;         /* up->im + up->ii r_up^2, r_up = r x n at the upper body */
+  double ang;          /* up->ii r_up, negated when the upper body is a */
 } shock_point;
 
 typedef struct shock_row {
   int32_t a, b;        /* solver bodies */
-  int32_t a_is_lower;
+  int32_t up;          /* the upper one, which alone takes the impulse */
   int32_t count, block;
+  double im_up;        /* up->im, negated when the upper body is a */
   double k11, k12, k22; /* the 2x2 matrix with the lower body held (block) */
   shock_point p[MANIFOLD_MAX_POINTS];
 } shock_row;
@@ -162,7 +166,8 @@ static int32_t make_rows (carom_world *world, const step_context *ctx, const int
       if (!rests_on (k, level, up_dir) || !mark[a_is_lower ? k->b : k->a])
         continue;
       r->a = k->a, r->b = k->b;
-      r->a_is_lower = a_is_lower;
+      r->up = a_is_lower ? k->b : k->a;
+      r->im_up = a_is_lower ? up->im : -up->im;
       r->count = k->count;
       r->block = k->block;
       for (j = 0; j < k->count; ++j)
@@ -173,6 +178,7 @@ static int32_t make_rows (carom_world *world, const step_context *ctx, const int
           q->normal = p->normal, q->ra = p->ra, q->rb = p->rb;
           q->adjusted = p->adjusted, q->rn_a = p->rn_a, q->rn_b = p->rn_b;
           q->mass = up->im + up->ii * r_up * r_up;
+          q->ang = a_is_lower ? up->ii * r_up : -(up->ii * r_up);
         }
       if (k->block)
         {
@@ -203,9 +209,9 @@ static void shock_pass (carom_world *world, const step_context *ctx, double tol)
   for (i = 0; i < world->shock_count; ++i)
     {
       const shock_row *r = &rows[i];
-      solver_body *a = &sb[r->a], *b = &sb[r->b];
+      const solver_body *a = &sb[r->a], *b = &sb[r->b];
       /* hold the lower body still: only the upper one takes the impulse */
-      solver_body *up = r->a_is_lower ? b : a;
+      solver_body *up = &sb[r->up];
       /* x is written below for every point of a row that is solved */
       double err[MANIFOLD_MAX_POINTS], x[MANIFOLD_MAX_POINTS], worst = 0.0;
       for (j = 0; j < r->count; ++j)
@@ -230,16 +236,11 @@ static void shock_pass (carom_world *world, const step_context *ctx, double tol)
         for (j = 0; j < r->count; ++j)
           x[j] = err[j] < 0.0 && r->p[j].mass > 0.0 ? -err[j] / r->p[j].mass : 0.0;
       for (j = 0; j < r->count; ++j)
-        {
-          const shock_point *p = &r->p[j];
-          double r_up = r->a_is_lower ? p->rn_b : p->rn_a;
-          /* raising vn: +x n on b, or -x n on a */
-          double lambda = r->a_is_lower ? x[j] : -x[j];
-          if (x[j] == 0.0)
-            continue;
-          up->v = v2_mad (up->v, up->im * lambda, p->normal);
-          up->w += up->ii * r_up * lambda;
-        }
+        if (x[j] != 0.0)
+          {
+            up->v = v2_mad (up->v, r->im_up * x[j], r->p[j].normal);
+            up->w += r->p[j].ang * x[j];
+          }
     }
 }
 
