@@ -44,7 +44,10 @@ void contact_shock_prepare (struct carom_world *world, const step_context *ctx);
 /* Room for the step's shock rows (0 when memory ran out), and its release. */
 int contact_shock_reserve (struct carom_world *world);
 void contact_shock_destroy (struct carom_world *world);
-void contact_shock (struct carom_world *world, const step_context *ctx);
+/* `moves`: how many times the sub-steps have moved the bodies so far this
+ * step (k in sub-step k before integrate_positions, k + 1 after it): the
+ * pass keeps the gaps it computed at the same count. */
+void contact_shock (struct carom_world *world, const step_context *ctx, int32_t moves);
 
 /* The cold start (shock.c): the contacts that begin resting this step
  * (contact.cold) are given the weight they carry as their impulse to warm

@@ -294,7 +294,7 @@ void solver_step (carom_world *world, const step_context *ctx)
             for (; it < SOLVE_MAX_ITERATIONS; ++it)
               if (!(contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, 1) > ctx->converged))
                 break;
-          contact_shock (world, ctx);
+          contact_shock (world, ctx, k);
           for (it = 0; it < ctx->iterations; ++it)
             {
               if (it > 0)
@@ -321,7 +321,7 @@ void solver_step (carom_world *world, const step_context *ctx)
             }
         }
       if (contacts)
-        contact_shock (world, ctx);
+        contact_shock (world, ctx, k + 1);
       if (joints)
         joint_sum_reaction (world);
     }
