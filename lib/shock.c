@@ -138,10 +138,14 @@ typedef struct shock_point {
                           (shock_gap), at the positions gap_at */
 } shock_point;
 
+/* shock_row.kind of a block (which has two points) */
+#define SHOCK_FACE 0
+
 typedef struct shock_row {
   int32_t a, b;        /* solver bodies */
   int32_t up;          /* the upper one, which alone takes the impulse */
-  int32_t count, block;
+  int32_t count;
+  int32_t kind;        /* SHOCK_FACE for a block, else count */
   int32_t gap_at;      /* the positions of the points' gaps (contact_shock's
                           `moves`), -1 before the first */
   double im_up;        /* up->im, negated when the upper body is a */
@@ -173,7 +177,7 @@ static int32_t make_rows (carom_world *world, const step_context *ctx, const int
       r->up = a_is_lower ? k->b : k->a;
       r->im_up = a_is_lower ? up->im : -up->im;
       r->count = k->count;
-      r->block = k->block;
+      r->kind = k->block ? SHOCK_FACE : k->count;
       r->gap_at = -1;
       for (j = 0; j < k->count; ++j)
         {
@@ -234,66 +238,87 @@ static void check_gaps (const solver_body *a, const solver_body *b, const shock_
 #define check_gaps(a, b, r, inv_h) ((void) 0)
 #endif
 
+/* One row of the pass, for `count` of its points, a block or not: called
+ * with both constant for the rows of one point and of two (nearly all),
+ * whose loops the compiler then unrolls and whose tests it drops. */
+static inline void shock_row_solve (shock_row *r, solver_body *sb, int32_t count, int block, double tol,
+                                    double inv_h, int32_t moves)
+{
+  const solver_body *a = &sb[r->a], *b = &sb[r->b];
+  /* hold the lower body still: only the upper one takes the impulse */
+  solver_body *up = &sb[r->up];
+  vec2 dv = v2_sub (b->v, a->v);
+  /* x is written below for every point of a row that is solved */
+  double err[MANIFOLD_MAX_POINTS], x[MANIFOLD_MAX_POINTS], worst = 0.0;
+  int32_t j;
+  /* the relative normal speed of b against a, as everywhere (contact_speed) */
+  for (j = 0; j < count; ++j)
+    {
+      const shock_point *p = &r->p[j];
+      err[j] = contact_speed_of (dv, a->w, b->w, p->normal, p->rn_a, p->rn_b);
+      worst = err[j] < worst ? err[j] : worst;
+    }
+  /* the gaps only raise the errors: a row the speeds leave within
+   * tolerance is left whatever they are, without computing them */
+  if (worst >= -tol)
+    return; /* the iterations did well enough here */
+  /* against what the point may approach by; positions change once a
+   * sub-step, so the gaps are computed once for the two passes that see
+   * the same positions, when first needed */
+  if (r->gap_at != moves)
+    {
+      for (j = 0; j < count; ++j)
+        r->p[j].gap = shock_gap (a, b, &r->p[j], inv_h);
+      r->gap_at = moves;
+    }
+  else
+    check_gaps (a, b, r, inv_h);
+  worst = 0.0;
+  for (j = 0; j < count; ++j)
+    {
+      err[j] += r->p[j].gap;
+      worst = err[j] < worst ? err[j] : worst;
+    }
+  if (worst >= -tol)
+    return;
+  if (block)
+    {
+      /* a face: both points at once, so the push does not tip the body */
+      if (!contact_lcp2 (r->k11, r->k12, r->k22, err[0], err[1], &x[0], &x[1]))
+        return;
+    }
+  else
+    for (j = 0; j < count; ++j)
+      x[j] = err[j] < 0.0 && r->p[j].mass > 0.0 ? -err[j] / r->p[j].mass : 0.0;
+  for (j = 0; j < count; ++j)
+    if (x[j] != 0.0)
+      {
+        up->v = v2_mad (up->v, r->im_up * x[j], r->p[j].normal);
+        up->w += r->p[j].ang * x[j];
+      }
+}
+
 static void shock_pass (carom_world *world, const step_context *ctx, double tol, int32_t moves)
 {
   shock_row *rows = world->shock_rows;
   solver_body *sb = world->solver_bodies;
-  int32_t i, j;
+  double inv_h = ctx->inv_h;
+  int32_t i;
   for (i = 0; i < world->shock_count; ++i)
-    {
-      shock_row *r = &rows[i];
-      const solver_body *a = &sb[r->a], *b = &sb[r->b];
-      /* hold the lower body still: only the upper one takes the impulse */
-      solver_body *up = &sb[r->up];
-      vec2 dv = v2_sub (b->v, a->v);
-      /* x is written below for every point of a row that is solved */
-      double err[MANIFOLD_MAX_POINTS], x[MANIFOLD_MAX_POINTS], worst = 0.0;
-      /* the relative normal speed of b against a, as everywhere (contact_speed) */
-      for (j = 0; j < r->count; ++j)
-        {
-          const shock_point *p = &r->p[j];
-          err[j] = contact_speed_of (dv, a->w, b->w, p->normal, p->rn_a, p->rn_b);
-          worst = err[j] < worst ? err[j] : worst;
-        }
-      /* the gaps only raise the errors: a row the speeds leave within
-       * tolerance is left whatever they are, without computing them */
-      if (worst >= -tol)
-        continue; /* the iterations did well enough here */
-      /* against what the point may approach by; positions change once a
-       * sub-step, so the gaps are computed once for the two passes that
-       * see the same positions, when first needed */
-      if (r->gap_at != moves)
-        {
-          for (j = 0; j < r->count; ++j)
-            r->p[j].gap = shock_gap (a, b, &r->p[j], ctx->inv_h);
-          r->gap_at = moves;
-        }
-      else
-        check_gaps (a, b, r, ctx->inv_h);
-      worst = 0.0;
-      for (j = 0; j < r->count; ++j)
-        {
-          err[j] += r->p[j].gap;
-          worst = err[j] < worst ? err[j] : worst;
-        }
-      if (worst >= -tol)
-        continue;
-      if (r->block)
-        {
-          /* a face: both points at once, so the push does not tip the body */
-          if (!contact_lcp2 (r->k11, r->k12, r->k22, err[0], err[1], &x[0], &x[1]))
-            continue;
-        }
-      else
-        for (j = 0; j < r->count; ++j)
-          x[j] = err[j] < 0.0 && r->p[j].mass > 0.0 ? -err[j] / r->p[j].mass : 0.0;
-      for (j = 0; j < r->count; ++j)
-        if (x[j] != 0.0)
-          {
-            up->v = v2_mad (up->v, r->im_up * x[j], r->p[j].normal);
-            up->w += r->p[j].ang * x[j];
-          }
-    }
+    switch (rows[i].kind)
+      {
+      case SHOCK_FACE:
+        shock_row_solve (&rows[i], sb, 2, 1, tol, inv_h, moves);
+        break;
+      case 1:
+        shock_row_solve (&rows[i], sb, 1, 0, tol, inv_h, moves);
+        break;
+      case 2:
+        shock_row_solve (&rows[i], sb, 2, 0, tol, inv_h, moves);
+        break;
+      default:
+        shock_row_solve (&rows[i], sb, rows[i].count, 0, tol, inv_h, moves);
+      }
 }
 
 int contact_shock_reserve (carom_world *world)
