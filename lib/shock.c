@@ -249,18 +249,21 @@ static inline void shock_row_solve (shock_row *r, solver_body *sb, int32_t count
   solver_body *up = &sb[r->up];
   vec2 dv = v2_sub (b->v, a->v);
   /* x is written below for every point of a row that is solved */
-  double err[MANIFOLD_MAX_POINTS], x[MANIFOLD_MAX_POINTS], worst = 0.0;
+  double err[MANIFOLD_MAX_POINTS], x[MANIFOLD_MAX_POINTS];
   int32_t j;
-  /* the relative normal speed of b against a, as everywhere (contact_speed) */
+  int below = 0;
+  /* the relative normal speed of b against a, as everywhere (contact_speed);
+   * a row is solved when some point's error is below -tol (tol >= 0: the
+   * least error and 0 is below it then; a NaN error is never below) */
   for (j = 0; j < count; ++j)
     {
       const shock_point *p = &r->p[j];
       err[j] = contact_speed_of (dv, a->w, b->w, p->normal, p->rn_a, p->rn_b);
-      worst = err[j] < worst ? err[j] : worst;
+      below |= err[j] < -tol;
     }
   /* the gaps only raise the errors: a row the speeds leave within
    * tolerance is left whatever they are, without computing them */
-  if (worst >= -tol)
+  if (!below)
     return; /* the iterations did well enough here */
   /* against what the point may approach by; positions change once a
    * sub-step, so the gaps are computed once for the two passes that see
@@ -273,13 +276,13 @@ static inline void shock_row_solve (shock_row *r, solver_body *sb, int32_t count
     }
   else
     check_gaps (a, b, r, inv_h);
-  worst = 0.0;
+  below = 0;
   for (j = 0; j < count; ++j)
     {
       err[j] += r->p[j].gap;
-      worst = err[j] < worst ? err[j] : worst;
+      below |= err[j] < -tol;
     }
-  if (worst >= -tol)
+  if (!below)
     return;
   if (block)
     {
