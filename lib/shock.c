@@ -142,8 +142,10 @@ typedef struct shock_point {
 #define SHOCK_FACE 0
 
 typedef struct shock_row {
-  int32_t a, b;        /* solver bodies */
-  int32_t up;          /* the upper one, which alone takes the impulse */
+  /* the solver bodies (solver_bodies does not move within a step), and
+   * the upper one, which alone takes the impulse */
+  const solver_body *a, *b;
+  solver_body *up;
   int32_t count;
   int32_t kind;        /* SHOCK_FACE for a block, else count */
   int32_t gap_at;      /* the positions of the points' gaps (contact_shock's
@@ -161,7 +163,7 @@ static int32_t make_rows (carom_world *world, const step_context *ctx, const int
 {
   vec2 up_dir = v2_neg (v2_normalize (ctx->gravity));
   const contacts *c = &world->contacts;
-  const solver_body *sb = world->solver_bodies;
+  solver_body *sb = world->solver_bodies;
   const int32_t *level = world->solver_scratch;
   shock_row *rows = world->shock_rows;
   int32_t i, j, n = 0;
@@ -169,12 +171,12 @@ static int32_t make_rows (carom_world *world, const step_context *ctx, const int
     {
       const contact *k = &c->list[order[i]];
       int a_is_lower = level[k->a] < level[k->b];
-      const solver_body *up = a_is_lower ? &sb[k->b] : &sb[k->a];
+      solver_body *up = a_is_lower ? &sb[k->b] : &sb[k->a];
       shock_row *r = &rows[n];
       if (!rests_on (k, level, up_dir) || !mark[a_is_lower ? k->b : k->a])
         continue;
-      r->a = k->a, r->b = k->b;
-      r->up = a_is_lower ? k->b : k->a;
+      r->a = &sb[k->a], r->b = &sb[k->b];
+      r->up = up;
       r->im_up = a_is_lower ? up->im : -up->im;
       r->count = k->count;
       r->kind = k->block ? SHOCK_FACE : k->count;
@@ -241,12 +243,11 @@ static void check_gaps (const solver_body *a, const solver_body *b, const shock_
 /* One row of the pass, for `count` of its points, a block or not: called
  * with both constant for the rows of one point and of two (nearly all),
  * whose loops the compiler then unrolls and whose tests it drops. */
-static inline void shock_row_solve (shock_row *r, solver_body *sb, int32_t count, int block, double tol,
-                                    double inv_h, int32_t moves)
+static inline void shock_row_solve (shock_row *r, int32_t count, int block, double tol, double inv_h, int32_t moves)
 {
-  const solver_body *a = &sb[r->a], *b = &sb[r->b];
+  const solver_body *a = r->a, *b = r->b;
   /* hold the lower body still: only the upper one takes the impulse */
-  solver_body *up = &sb[r->up];
+  solver_body *up = r->up;
   vec2 dv = v2_sub (b->v, a->v);
   /* x is written below for every point of a row that is solved */
   double err[MANIFOLD_MAX_POINTS], x[MANIFOLD_MAX_POINTS];
@@ -304,23 +305,22 @@ static inline void shock_row_solve (shock_row *r, solver_body *sb, int32_t count
 static void shock_pass (carom_world *world, const step_context *ctx, double tol, int32_t moves)
 {
   shock_row *rows = world->shock_rows;
-  solver_body *sb = world->solver_bodies;
   double inv_h = ctx->inv_h;
   int32_t i;
   for (i = 0; i < world->shock_count; ++i)
     switch (rows[i].kind)
       {
       case SHOCK_FACE:
-        shock_row_solve (&rows[i], sb, 2, 1, tol, inv_h, moves);
+        shock_row_solve (&rows[i], 2, 1, tol, inv_h, moves);
         break;
       case 1:
-        shock_row_solve (&rows[i], sb, 1, 0, tol, inv_h, moves);
+        shock_row_solve (&rows[i], 1, 0, tol, inv_h, moves);
         break;
       case 2:
-        shock_row_solve (&rows[i], sb, 2, 0, tol, inv_h, moves);
+        shock_row_solve (&rows[i], 2, 0, tol, inv_h, moves);
         break;
       default:
-        shock_row_solve (&rows[i], sb, rows[i].count, 0, tol, inv_h, moves);
+        shock_row_solve (&rows[i], rows[i].count, 0, tol, inv_h, moves);
       }
 }
 
