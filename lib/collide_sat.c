@@ -100,8 +100,8 @@ static inline int edge_taken (const convex_piece *p, const convex_piece *q, xfor
  * stop past the margin (an edge passed over may be past the margin where
  * the plain search would stop at it, but then both end past it, and
  * callers look no further). */
-double sat_max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double margin,
-                          int32_t *edge, double *outer, int32_t *outer_edge)
+static inline double max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double margin,
+                                     int32_t *edge, double *outer, int32_t *outer_edge)
 {
   xform rel;
   vec2 c;
@@ -133,6 +133,14 @@ double sat_max_separation (const convex_piece *p, xform xp, const convex_piece *
   *outer = best;
   *outer_edge = best > -INFINITY ? best_edge : -1;
   return best;
+}
+
+/* max_separation, for callers outside: sat_collide has it inline, where
+ * the two poses are not passed on the stack twice for every pair. */
+double sat_max_separation (const convex_piece *p, xform xp, const convex_piece *q, xform xq, double margin,
+                          int32_t *edge, double *outer, int32_t *outer_edge)
+{
+  return max_separation (p, xp, q, xq, margin, edge, outer, outer_edge);
 }
 
 double polygons_separation_face (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis,
@@ -355,10 +363,10 @@ static int32_t sat_collide (const convex_piece *a, xform xa, const convex_piece 
   clip_vertex seg[2], clip1[2], clip2[2];
   m->count = 0;
   m->gap = INFINITY;
-  sep_a = sat_max_separation (a, xa, b, xb, margin, &edge_a, &face_a, &outer_a);
+  sep_a = max_separation (a, xa, b, xb, margin, &edge_a, &face_a, &outer_a);
   if (sep_a > margin)
     return 0;
-  sep_b = sat_max_separation (b, xb, a, xa, margin, &edge_b, &face_b, &outer_b);
+  sep_b = max_separation (b, xb, a, xa, margin, &edge_b, &face_b, &outer_b);
   if (sep_b > margin)
     return 0;
   /* the faces a contact may take: none of a seam (seams.h), though the
