@@ -1,6 +1,9 @@
 /* Separating axis theorem for convex pieces (thesis 3.2.1), with contact
  * points from clipping, which the thesis names as SAT's pitfall. */
 #include "collide.h"
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 /* The gap between an edge of another piece, whose outward normal is n and
  * whose line lies at `offset` along it, and piece q's nearest vertex (all
@@ -74,6 +77,27 @@ static inline int32_t lowest_bit (uint32_t m)
 #endif
 }
 
+/* Bit i set for each of the n gaps that is not below `least` (a gap that
+ * is no number is kept), without a branch (which are kept is not
+ * predictable).
+ * With SSE2, two gaps a compare: gap[n] is set (a number, whatever it
+ * is), and its bit is dropped. */
+static inline uint32_t keep_mask (const double *gap, int32_t n, double least)
+{
+  uint32_t keep = 0;
+  int32_t i;
+#ifdef __SSE2__
+  __m128d l = _mm_set1_pd (least);
+  for (i = 0; i < n; i += 2)
+    keep |= (uint32_t) _mm_movemask_pd (_mm_cmpnlt_pd (_mm_loadu_pd (gap + i), l)) << i;
+  keep &= (1u << n) - 1u;
+#else
+  for (i = 0; i < n; ++i)
+    keep |= (uint32_t) !(gap[i] < least) << i;
+#endif
+  return keep;
+}
+
 /* Edge i of p searched as the plain search does, taken as the best if it
  * beats it. Returns whether the best now exceeds the margin (the search
  * stops). */
@@ -105,7 +129,8 @@ static inline double max_separation (const convex_piece *p, xform xp, const conv
 {
   xform rel;
   vec2 c;
-  double gap[SAT_PRUNE_MAX_EDGES], least, best = -INFINITY, top = -INFINITY;
+  /* room for one past the last edge (keep_mask) */
+  double gap[SAT_PRUNE_MAX_EDGES + 1], least, best = -INFINITY, top = -INFINITY;
   int32_t i, best_edge = 0;
   uint32_t keep = 0;
   if (p->count > SAT_PRUNE_MAX_EDGES || p->internal != 0)
@@ -117,13 +142,12 @@ static inline double max_separation (const convex_piece *p, xform xp, const conv
       gap[i] = v2_dot (p->normals[i], v2_sub (c, p->vertices[i]));
       top = gap[i] > top ? gap[i] : top;
     }
+  gap[i] = 0.0;
   least = top - q->bound_radius
           - SAT_PRUNE_ROUNDING * (fabs (rel.p.x) + fabs (rel.p.y) + fabs (p->center.x) + fabs (p->center.y)
                                   + fabs (q->center.x) + fabs (q->center.y) + p->bound_radius + q->bound_radius);
-  /* the edges that may win, as bits, without a branch (which do is not
-   * predictable), then searched in order */
-  for (i = 0; i < p->count; ++i)
-    keep |= (uint32_t) !(gap[i] < least) << i;
+  /* the edges that may win, then searched in order */
+  keep = keep_mask (gap, p->count, least);
   for (; keep; keep &= keep - 1)
     if (edge_taken (p, q, rel, lowest_bit (keep), margin, &best, &best_edge))
       break;
