@@ -28,13 +28,15 @@ void contacts_destroy (carom_world *world)
   memset (c, 0, sizeof *c);
 }
 
-static uint32_t pair_hash (int32_t a, int32_t b, int32_t pa, int32_t pb)
+/* The table's slot of a pair of pieces, before the mask: the parts, each
+ * times its own odd constant, exclusive-or'd, without a mixing round after
+ * each (the table is built anew in most detections, a hash for every
+ * contact). Which slot a key takes changes where it is found, not what:
+ * two contacts of one key lie on one chain, the first kept found first. */
+static inline uint32_t pair_hash (int32_t a, int32_t b, int32_t pa, int32_t pb)
 {
-  uint32_t h = (uint32_t) a * 0x9E3779B1u;
-  h ^= (uint32_t) b * 0x85EBCA77u + (h << 6) + (h >> 2);
-  h ^= (uint32_t) pa * 0xC2B2AE3Du + (h << 6) + (h >> 2);
-  h ^= (uint32_t) pb * 0x27D4EB2Fu + (h << 6) + (h >> 2);
-  return h;
+  return ((uint32_t) a * 0x9E3779B1u) ^ ((uint32_t) b * 0x85EBCA77u) ^ ((uint32_t) pa * 0xC2B2AE3Du)
+         ^ ((uint32_t) pb * 0x27D4EB2Fu);
 }
 
 static int build_table (carom_world *world)
