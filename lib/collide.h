@@ -84,5 +84,13 @@ int32_t collide_polygons_sat_toward (const convex_piece *a, xform xa, const conv
  * other give impact points, the penetrated edge gives the normal, including
  * the parallel-edge and vertex-on-vertex cases. */
 int32_t collide_polygons_vertex_edge (const vec2 *va, int32_t na, xform xa, const vec2 *vb, int32_t nb, xform xb, double margin, manifold *m);
+/* The same with seams: bit i of internal_a (internal_b) says edge i of A's
+ * (B's) outline is internal (seams.h), and no contact takes such an edge as
+ * its penetrated edge or as one of a parallel pair. */
+int32_t collide_polygons_vertex_edge_seams (const vec2 *va, int32_t na, uint64_t internal_a, xform xa, const vec2 *vb,
+                                            int32_t nb, uint64_t internal_b, xform xb, double margin, manifold *m);
+/* Two polygon shapes' whole outlines, each with its seams (seams_outline):
+ * the world's vertex-edge narrow phase. */
+int32_t collide_outlines_vertex_edge (const shape *sa, xform xa, const shape *sb, xform xb, double margin, manifold *m);
 
 #endif

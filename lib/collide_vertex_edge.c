@@ -18,6 +18,20 @@
  * Then, if one of V's own edges is antiparallel to the chosen edge and the
  * two overlap (fig. 3.9), the contact is the parallel-edge one instead.
  *
+ * Seams (seams.h): an internal edge of a static outline, shared with
+ * another static shape, is never the penetrated edge nor one of a parallel
+ * pair, as SAT takes no face from a seam: a vertex that came in through a
+ * seam (a box sliding over tiles, its front corner a hair below the next
+ * tile's top) is met on the crossed edge that is not one, else on the
+ * nearest edge that is not one, so it slides on across the surface the
+ * seam continues instead of catching on the tile's side (a ghost
+ * collision). And a vertex next to a seam is no corner: the face goes on
+ * across it (as a circle meets it, collide_circle.c), so it makes only the
+ * parallel contact of its outer edge, never a vertex-edge one: a box
+ * sliding on a tile, its bottom on the tiles' line, met the next tile's
+ * corner with its front face, at the end of that face (and the first
+ * tile's corner there as well), and stopped.
+ *
  * Choices the solver relies on:
  *   - Normals point from A to B: minus Q's outward edge normal when P is A,
  *     Q's outward edge normal when P is B. Depth is the distance of V from
@@ -41,6 +55,8 @@
  *   - At most MANIFOLD_MAX_POINTS contacts: the deepest, ties broken by the
  *     lower feature id, listed in that order. */
 #include "collide.h"
+
+#include "seams.h"
 
 /* |sin| of the angle under which two edges count as parallel (fig. 3.9). */
 #define PARALLEL_SIN 1e-6
@@ -69,10 +85,17 @@ typedef struct ve_pass {
   xform xq;
   xform p_to_q;
   int owner_b; /* P is polygon B */
+  uint64_t internal_a, internal_b, internal_p, internal_q; /* seams: bit i, edge i */
 } ve_pass;
 
 static int32_t next_index (int32_t i, int32_t n) { return i + 1 < n ? i + 1 : 0; }
 static int32_t prev_index (int32_t i, int32_t n) { return i > 0 ? i - 1 : n - 1; }
+
+/* Whether edge j of an outline with seams `internal` is internal. */
+static int seam (uint64_t internal, int32_t j)
+{
+  return j < 64 && ((internal >> j) & 1u);
+}
 
 /* Signed distance of v from the line of edge j of Q, positive outside (the
  * outward normal of a counter-clockwise edge e is (e.y, -e.x)). Returns 0 for
@@ -122,7 +145,7 @@ static int32_t last_entry (const ve_pass *s, vec2 n, vec2 v)
       vec2 q0 = s->vq[j], e = v2_sub (s->vq[next_index (j, s->nq)], q0);
       vec2 w = v2_sub (q0, n);
       double den = v2_cross (r, e), tn, un, t, d;
-      if (!(den < 0.0))
+      if (!(den < 0.0) || seam (s->internal_q, j))
         continue;
       /* t along n -> v and u along the edge, both in [0, 1]; den < 0 */
       tn = v2_cross (w, e);
@@ -142,13 +165,14 @@ static int32_t last_entry (const ve_pass *s, vec2 n, vec2 v)
   return best;
 }
 
-/* The edge of Q nearest to v (distance to the segment): the fallback when v
- * is inside Q and no crossing is found. When the nearest point is a corner
- * of Q, its two edges tie exactly (the distance is taken to the corner
- * itself, not through each edge, so rounding cannot pick one); at a reflex
- * corner v may lie outside one of the two edge lines, so the tie goes to an
- * edge v is behind, then the shallower, then the lower index. */
-static int32_t nearest_edge (const ve_pass *s, vec2 v)
+/* The edge of Q nearest to v (distance to the segment) that is not a seam
+ * (`seams` 0: any edge): the fallback when v is inside Q and no crossing
+ * is found. When the nearest point is a corner of Q, its two edges tie
+ * exactly (the distance is taken to the corner itself, not through each
+ * edge, so rounding cannot pick one); at a reflex corner v may lie outside
+ * one of the two edge lines, so the tie goes to an edge v is behind, then
+ * the shallower, then the lower index. */
+static int32_t nearest_edge (const ve_pass *s, vec2 v, uint64_t seams)
 {
   int32_t j, best = -1;
   double best_d2 = 0.0, best_dist = 0.0;
@@ -157,7 +181,7 @@ static int32_t nearest_edge (const ve_pass *s, vec2 v)
       vec2 q0 = s->vq[j], q1 = s->vq[next_index (j, s->nq)], e = v2_sub (q1, q0);
       vec2 w = v2_sub (v, q0);
       double len2 = v2_len2 (e), t, d2, dist;
-      if (!(len2 > 0.0) || !edge_distance (s, j, v, &dist))
+      if (!(len2 > 0.0) || seam (seams, j) || !edge_distance (s, j, v, &dist))
         continue;
       t = v2_dot (w, e);
       if (t <= 0.0)
@@ -180,7 +204,7 @@ static int32_t nearest_edge (const ve_pass *s, vec2 v)
 }
 
 /* For v outside Q: the nearest edge within margin whose segment v projects
- * onto, or -1. */
+ * onto, not a seam, or -1. */
 static int32_t margin_edge (const ve_pass *s, vec2 v, double margin)
 {
   int32_t j, best = -1;
@@ -189,7 +213,7 @@ static int32_t margin_edge (const ve_pass *s, vec2 v, double margin)
     {
       vec2 q0 = s->vq[j], e = v2_sub (s->vq[next_index (j, s->nq)], q0);
       double len2 = v2_len2 (e), t, d;
-      if (!(len2 > 0.0) || !edge_distance (s, j, v, &d))
+      if (!(len2 > 0.0) || seam (s->internal_q, j) || !edge_distance (s, j, v, &d))
         continue;
       if (d > margin || d < -ON_EDGE_REL * sqrt (len2))
         continue;
@@ -215,7 +239,8 @@ static vec2 at_projection (vec2 p0, vec2 p1, double t0, double t1, double t)
 /* Parallel-edge contact between edge ka of A and edge jb of B (fig. 3.9 and
  * 3.10), in the world frame: the edges must be antiparallel within
  * PARALLEL_SIN, overlap along their common direction over a nonzero length,
- * and be within margin of each other at both ends of the overlap. The point
+ * and be within margin of each other at both ends of the overlap, neither
+ * of them a seam. The point
  * is the midpoint of the overlap, halfway between the two edges. Computed
  * from the pair only, so every vertex that finds the pair gets the same
  * bits. */
@@ -226,6 +251,8 @@ static int parallel_contact (const ve_pass *s, int32_t ka, int32_t jb, manifold_
   vec2 ua = v2_normalize (v2_sub (a1, a0)), ub = v2_normalize (v2_sub (b1, b0));
   vec2 u, n, am, bm;
   double ta1, tb0, tb1, lo, hi, mid, d_lo, d_hi;
+  if (seam (s->internal_a, ka) || seam (s->internal_b, jb))
+    return 0;
   if (v2_dot (ua, ub) >= 0.0 || fabs (v2_cross (ua, ub)) > PARALLEL_SIN)
     return 0;
   /* Axis along A's edge (fig. 3.10), taken as the bisector of the two edge
@@ -296,7 +323,13 @@ static void vertex_contact (const ve_pass *s, int32_t i, vec2 vprev, vec2 v, vec
     {
       int32_t ep = last_entry (s, vprev, v), en = last_entry (s, vnext, v);
       if (ep < 0 && en < 0)
-        e = nearest_edge (s, v); /* deep inside, no crossing */
+        {
+          /* deep inside, no crossing (or only through seams); an outline
+           * of seams only keeps its nearest edge, for a finite normal */
+          e = nearest_edge (s, v, s->internal_q);
+          if (e < 0)
+            e = nearest_edge (s, v, 0u);
+        }
       else if (en < 0 || ep == en)
         e = ep; /* fig. 3.8, or one segment crossing (fig. 3.9) */
       else if (ep < 0)
@@ -326,6 +359,9 @@ static void vertex_contact (const ve_pass *s, int32_t i, vec2 vprev, vec2 v, vec
           return;
         }
     }
+  /* a vertex next to a seam: the face goes on across it */
+  if (seam (s->internal_p, prev_index (i, s->np)) || seam (s->internal_p, i))
+    return;
 
   {
     vec2 q0 = s->vq[e], q1 = s->vq[next_index (e, s->nq)];
@@ -352,6 +388,8 @@ static void vertex_pass (ve_pass *s, int owner_b, manifold *m)
   s->vq = owner_b ? s->va : s->vb;
   s->nq = owner_b ? s->na : s->nb;
   s->xq = owner_b ? s->xa : s->xb;
+  s->internal_p = owner_b ? s->internal_b : s->internal_a;
+  s->internal_q = owner_b ? s->internal_a : s->internal_b;
   s->p_to_q = xform_relative (s->xq, s->xp);
 
   /* Q's box in its own frame, grown by margin: vertices of P outside it can
@@ -380,6 +418,18 @@ static void vertex_pass (ve_pass *s, int owner_b, manifold *m)
 int32_t collide_polygons_vertex_edge (const vec2 *va, int32_t na, xform xa, const vec2 *vb, int32_t nb, xform xb,
                                       double margin, manifold *m)
 {
+  return collide_polygons_vertex_edge_seams (va, na, 0u, xa, vb, nb, 0u, xb, margin, m);
+}
+
+int32_t collide_outlines_vertex_edge (const shape *sa, xform xa, const shape *sb, xform xb, double margin, manifold *m)
+{
+  return collide_polygons_vertex_edge_seams (sa->vertices, sa->count, seams_outline (sa), xa, sb->vertices, sb->count,
+                                             seams_outline (sb), xb, margin, m);
+}
+
+int32_t collide_polygons_vertex_edge_seams (const vec2 *va, int32_t na, uint64_t internal_a, xform xa, const vec2 *vb,
+                                            int32_t nb, uint64_t internal_b, xform xb, double margin, manifold *m)
+{
   ve_pass s;
   int32_t i, j;
   if (!m)
@@ -398,6 +448,8 @@ int32_t collide_polygons_vertex_edge (const vec2 *va, int32_t na, xform xa, cons
   s.nb = nb;
   s.xb = xb;
   s.margin = margin;
+  s.internal_a = internal_a;
+  s.internal_b = internal_b;
   /* Vertices of A against B, then of B against A. */
   vertex_pass (&s, 0, m);
   vertex_pass (&s, 1, m);

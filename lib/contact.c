@@ -346,7 +346,7 @@ static void narrow_phase (const carom_world *world, int32_t a, int32_t b, int32_
   else if (pb < 0 && sb->kind == CAROM_SHAPE_CIRCLE)
     collide_polygon_circle (&sa->pieces[pa], xa, xb.p, sb->radius, margin, m);
   else if (pa < 0)
-    collide_polygons_vertex_edge (sa->vertices, sa->count, xa, sb->vertices, sb->count, xb, margin, m);
+    collide_outlines_vertex_edge (sa, xa, sb, xb, margin, m);
   else
     collide_polygons_sat_toward (&sa->pieces[pa], xa, &sb->pieces[pb], xb, margin, toward, m);
 }

@@ -100,3 +100,42 @@ void seams_update (carom_world *world)
         }
     }
 }
+
+/* Whether the outline edge from u1 to u2 lies along edge j of piece p, in
+ * the same direction, within it (to SEAM_TOLERANCE of the piece edge): a
+ * piece's edge on the outline is one outline edge, or several where the
+ * outline has vertices straight through that the piece drops. */
+static int along (vec2 u1, vec2 u2, const convex_piece *p, int32_t j)
+{
+  vec2 p1 = p->vertices[j], e = v2_sub (p->vertices[(j + 1) % p->count], p1);
+  double len2 = v2_len2 (e), tol = SEAM_TOLERANCE * len2;
+  vec2 d1 = v2_sub (u1, p1), d2 = v2_sub (u2, p1);
+  return len2 > 0.0 && fabs (v2_cross (e, d1)) <= tol && fabs (v2_cross (e, d2)) <= tol && v2_dot (e, d1) >= -tol
+         && v2_dot (e, d2) <= len2 + tol && v2_dot (e, v2_sub (u2, u1)) > 0.0;
+}
+
+uint64_t seams_outline (const shape *s)
+{
+  uint64_t out = 0;
+  int32_t i, j, u, any = 0;
+  if (s->kind != CAROM_SHAPE_POLYGON)
+    return 0;
+  for (u = 0; u < s->piece_count; ++u)
+    any |= s->pieces[u].internal != 0;
+  if (!any)
+    return 0; /* a moving body, or a static one that touches no other */
+  if (s->pieces_shared)
+    return s->pieces[0].internal; /* the outline is its one piece */
+  for (i = 0; i < s->count && i < SEAM_MAX_EDGES; ++i)
+    {
+      vec2 u1 = s->vertices[i], u2 = s->vertices[(i + 1) % s->count];
+      for (u = 0; u < s->piece_count && !((out >> i) & 1u); ++u)
+        for (j = 0; j < s->pieces[u].count && j < SEAM_MAX_EDGES; ++j)
+          if (piece_edge_internal (&s->pieces[u], j) && along (u1, u2, &s->pieces[u], j))
+            {
+              out |= (uint64_t) 1 << i;
+              break;
+            }
+    }
+  return out;
+}

@@ -8,10 +8,19 @@
 #ifndef CAROM_SEAMS_H
 #define CAROM_SEAMS_H
 
+#include <stdint.h>
+
 struct carom_world;
 
 /* Mark the internal edges of every static piece (convex_piece.internal),
  * after static bodies were added, removed or moved (world->seams_dirty). */
 void seams_update (struct carom_world *world);
+
+struct shape;
+/* The internal edges of a polygon's whole outline (bit i: edge i, from
+ * vertex i to i + 1; the first 64), for the vertex-edge narrow phase: an
+ * outline edge is internal when it lies along an internal edge of one of
+ * its convex pieces. 0 for a moving body. */
+uint64_t seams_outline (const struct shape *s);
 
 #endif

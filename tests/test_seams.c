@@ -5,6 +5,8 @@
  * static body makes its seams again. */
 #include "support.h"
 
+#include "collide.h"
+
 #include <math.h>
 #include <stdio.h>
 
@@ -73,40 +75,45 @@ static void cross (carom_world *w, carom_body_id id, double v0, double x_end, do
 
 /* A sliding circle, a sliding box (no friction) and a rolling circle
  * (friction 0.6), at 2, 5 and 8 m/s, over 40 tiles of equal and of
- * uneven widths, continuous collision off and on: each crosses the floor
- * with its speed within 1% and never more than 1 mm above its start. */
+ * uneven widths, continuous collision off and on, with either narrow phase
+ * for the box (SAT's pieces, or the vertex-edge method's whole outlines):
+ * each crosses the floor with its speed within 1% and never more than 1 mm
+ * above its start. */
 static void test_bodies_cross_touching_tiles_smoothly (void **state)
 {
   static const double even[] = { 1.0 }, uneven[] = { 0.7, 1.3, 0.45, 1.0, 0.93 }, speeds[] = { 2.0, 5.0, 8.0 };
+  static const carom_narrow_phase narrow[] = { CAROM_NARROW_SAT, CAROM_NARROW_VERTEX_EDGE };
   double worst_v = 0.0, worst_rise = 0.0;
-  int kind, cont, sv, layout;
+  int kind, cont, sv, layout, np;
   (void) state;
-  for (kind = 0; kind < 3; ++kind)
-    for (cont = 0; cont < 2; ++cont)
-      for (sv = 0; sv < 3; ++sv)
-        for (layout = 0; layout < 2; ++layout)
-          {
-            carom_world *w = NULL;
-            carom_world_def def;
-            carom_body_id id;
-            double length, speed_err, rise;
-            int crossed;
-            carom_world_def_init (&def, sizeof def);
-            def.gravity_y = -G;
-            def.friction = kind == ROLLING_CIRCLE ? 0.6 : 0.0;
-            assert_status (carom_world_init (&w, &def), CAROM_OK);
-            assert_status (carom_world_set_continuous (w, cont), CAROM_OK);
-            length = layout ? add_tiles (w, uneven, 5, NULL) : add_tiles (w, even, 1, NULL);
-            id = add_mover (w, kind, speeds[sv]);
-            cross (w, id, speeds[sv], length - 1.0, &speed_err, &rise, &crossed);
-            if (!crossed || !(speed_err < 0.01) || !(rise < 1e-3))
-              fail_msg ("%s at %g m/s, %s tiles, continuous %d: %s, speed off by %.3g, rose %.3g m", kind_name[kind],
-                        speeds[sv], layout ? "uneven" : "even", cont, crossed ? "crossed" : "did not cross", speed_err,
-                        rise);
-            worst_v = fmax (worst_v, speed_err);
-            worst_rise = fmax (worst_rise, rise);
-            carom_world_destroy (w);
-          }
+  for (np = 0; np < 2; ++np)
+    for (kind = 0; kind < 3; ++kind)
+      for (cont = 0; cont < 2; ++cont)
+        for (sv = 0; sv < 3; ++sv)
+          for (layout = 0; layout < 2; ++layout)
+            {
+              carom_world *w = NULL;
+              carom_world_def def;
+              carom_body_id id;
+              double length, speed_err, rise;
+              int crossed;
+              carom_world_def_init (&def, sizeof def);
+              def.gravity_y = -G;
+              def.friction = kind == ROLLING_CIRCLE ? 0.6 : 0.0;
+              def.narrow_phase = narrow[np];
+              assert_status (carom_world_init (&w, &def), CAROM_OK);
+              assert_status (carom_world_set_continuous (w, cont), CAROM_OK);
+              length = layout ? add_tiles (w, uneven, 5, NULL) : add_tiles (w, even, 1, NULL);
+              id = add_mover (w, kind, speeds[sv]);
+              cross (w, id, speeds[sv], length - 1.0, &speed_err, &rise, &crossed);
+              if (!crossed || !(speed_err < 0.01) || !(rise < 1e-3))
+                fail_msg ("%s at %g m/s, %s tiles, continuous %d, %s: %s, speed off by %.3g, rose %.3g m",
+                          kind_name[kind], speeds[sv], layout ? "uneven" : "even", cont, np ? "vertex-edge" : "SAT",
+                          crossed ? "crossed" : "did not cross", speed_err, rise);
+              worst_v = fmax (worst_v, speed_err);
+              worst_rise = fmax (worst_rise, rise);
+              carom_world_destroy (w);
+            }
   print_message ("over the seams: speed off by at most %.3g, rise at most %.3g m\n", worst_v, worst_rise);
 }
 
@@ -144,13 +151,14 @@ static void test_partly_covered_edge_stays_a_surface (void **state)
 
 /* Moving a static body makes its seams again: one of the tiles raised by
  * 2 cm is a step, and a sliding box is stopped or thrown by it; put back,
- * the floor is smooth again. */
+ * the floor is smooth again. With either narrow phase (the vertex-edge
+ * method reads its outlines' seams from their pieces, seams_outline). */
 static void test_moving_a_static_body_makes_its_seams_again (void **state)
 {
   static const double even[] = { 1.0 };
   int round;
   (void) state;
-  for (round = 0; round < 2; ++round)
+  for (round = 0; round < 4; ++round)
     {
       carom_world *w = NULL;
       carom_world_def def;
@@ -159,20 +167,59 @@ static void test_moving_a_static_body_makes_its_seams_again (void **state)
       int crossed;
       carom_world_def_init (&def, sizeof def);
       def.gravity_y = -G;
+      def.narrow_phase = round < 2 ? CAROM_NARROW_SAT : CAROM_NARROW_VERTEX_EDGE;
       assert_status (carom_world_init (&w, &def), CAROM_OK);
       add_tiles (w, even, 1, tiles);
       id = add_mover (w, SLIDING_BOX, 5.0);
       assert_status (carom_world_update (w, 1.0 / 60.0), CAROM_OK); /* seams made for the flat floor */
       assert_status (carom_body_set_position (w, tiles[10], 10.5, -0.48), CAROM_OK);
-      if (round == 1)
+      if (round % 2 == 1)
         assert_status (carom_body_set_position (w, tiles[10], 10.5, -0.5), CAROM_OK);
       cross (w, id, 5.0, 39.0, &speed_err, &rise, &crossed);
-      if (round == 0)
+      if (round % 2 == 0)
         assert_true (!crossed || speed_err > 0.05 || rise > 1e-3);
       else
         assert_true (crossed && speed_err < 0.01 && rise < 1e-3);
       carom_world_destroy (w);
     }
+}
+
+/* The vertex-edge method on outlines with seams (collide.h): a box's
+ * corner 1 cm past a tile's left side, a seam, and 2 cm below its top
+ * came in through the seam, shallower than through the top: it is met on
+ * the top (the box's bottom along it, one parallel contact at the middle of
+ * their 1 cm of overlap), and the tile's corner at the seam, inside the
+ * box, is no corner (the face goes on across it). Without the seams the
+ * corner is met on the tile's side, across the floor. */
+static void test_vertex_edge_meets_no_seam (void **state)
+{
+  static const vec2 unit[4] = { { -0.5, -0.5 }, { 0.5, -0.5 }, { 0.5, 0.5 }, { -0.5, 0.5 } };
+  static const vec2 small[4] = { { -0.1, -0.1 }, { 0.1, -0.1 }, { 0.1, 0.1 }, { -0.1, 0.1 } };
+  xform tile, box;
+  manifold m;
+  int32_t i, side;
+  (void) state;
+  tile.p = v2 (0.5, -0.5), tile.q = rot2_from_angle (0.0);
+  box.p = v2 (-0.09, 0.08), box.q = rot2_from_angle (0.0);
+  /* edges 1 and 3, the tile's sides, are seams; the tile as A and as B */
+  for (side = 0; side < 2; ++side)
+    {
+      double up = side ? -1.0 : 1.0; /* the normal points from A to B */
+      if (side)
+        collide_polygons_vertex_edge_seams (small, 4, 0u, box, unit, 4, 0xau, tile, 0.01, &m);
+      else
+        collide_polygons_vertex_edge_seams (unit, 4, 0xau, tile, small, 4, 0u, box, 0.01, &m);
+      assert_int_equal (m.count, 1);
+      assert_near_abs (m.points[0].normal.x, 0.0, 1e-15);
+      assert_near_abs (m.points[0].normal.y, up, 1e-15);
+      assert_near_abs (m.points[0].depth, 0.02, 1e-15);
+      assert_near_abs (m.points[0].point.x, 0.005, 1e-15);
+      assert_near_abs (m.points[0].point.y, -0.01, 1e-15);
+    }
+  collide_polygons_vertex_edge (unit, 4, tile, small, 4, box, 0.01, &m);
+  for (i = 0; i < m.count && m.points[i].normal.x == 0.0; ++i)
+    ;
+  assert_true (i < m.count); /* a normal across the floor */
 }
 
 int main (void)
@@ -181,6 +228,7 @@ int main (void)
     cmocka_unit_test (test_bodies_cross_touching_tiles_smoothly),
     cmocka_unit_test (test_partly_covered_edge_stays_a_surface),
     cmocka_unit_test (test_moving_a_static_body_makes_its_seams_again),
+    cmocka_unit_test (test_vertex_edge_meets_no_seam),
   };
   return cmocka_run_group_tests_name ("seams", tests, NULL, NULL);
 }
