@@ -248,10 +248,25 @@ static double reach_time (const toi_pair *p, double t, vec2 n, vec2 ga, vec2 gb)
   return ta > tb ? ta : tb;
 }
 
+/* The vertex-edge method's whole outlines: no pieces named (-1), two
+ * polygons. */
+static int whole_outlines (const body *A, const body *B, const contact *k)
+{
+  return k->piece_a < 0 && k->piece_b < 0 && A->shape.kind == CAROM_SHAPE_POLYGON
+         && B->shape.kind == CAROM_SHAPE_POLYGON;
+}
+
+int toi_searchable (const carom_world *world, const contact *k)
+{
+  const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
+  return !whole_outlines (A, B, k) || (A->shape.convex && B->shape.convex);
+}
+
 double toi_first_touch (const carom_world *world, const contact *k, const solver_body *a, const solver_body *b,
                         const step_context *ctx, double t_from, double t_max, const impact_shift *shifts, vec2 *axis)
 {
   const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
+  contact pieces;
   toi_pair p;
   vec2 ga = a->moves == MOVES_DYNAMIC ? ctx->gravity : v2 (0.0, 0.0);
   vec2 gb = b->moves == MOVES_DYNAMIC ? ctx->gravity : v2 (0.0, 0.0);
@@ -265,6 +280,16 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
                                      body_reach_uncapped (B, ctx->dt, ctx->accel), ctx->dt, ctx->accel, ctx->continuous)
                         ? TOI_MAX_ADVANCES_SWEPT
                         : TOI_MAX_ADVANCES;
+  if (whole_outlines (A, B, k))
+    {
+      /* convex whole outlines (toi_searchable): each is its single piece,
+       * the same surface, whose separation and faces the search follows */
+      if (!A->shape.convex || !B->shape.convex)
+        return TOI_UNKNOWN;
+      pieces = *k;
+      pieces.piece_a = pieces.piece_b = 0;
+      k = &pieces;
+    }
   p.world = world, p.k = k, p.a = a, p.b = b, p.ctx = ctx;
   p.shift_a = shifts ? &shifts[k->a] : NULL;
   p.shift_b = shifts ? &shifts[k->b] : NULL;
