@@ -55,12 +55,14 @@ static void pack_point_empty (batch_point *q, int lane)
   q->adjusted[lane] = 0.0;
   q->rn_a[lane] = q->rn_b[lane] = q->rt_a[lane] = q->rt_b[lane] = 0.0;
   q->normal_mass[lane] = q->tangent_mass[lane] = 0.0;
-  q->normal_impulse[lane] = q->tangent_impulse[lane] = q->push_impulse[lane] = 0.0;
+  q->normal_impulse[lane] = q->tangent_impulse[lane] = 0.0;
   q->total[lane] = 0.0;
 }
 
-/* Lane `lane` of point j of a batch: contact point p. */
-static void pack_point (batch_point *q, int lane, const contact_point *p)
+/* Lane `lane` of point j of a batch: contact point p. Not push_impulse: a
+ * sub-step's first push-out pass starts from none (first) and stores it
+ * before any pass reads it. */
+static void pack_point (batch_point *restrict q, int lane, const contact_point *restrict p)
 {
   q->nx[lane] = p->normal.x;
   q->ny[lane] = p->normal.y;
@@ -77,7 +79,6 @@ static void pack_point (batch_point *q, int lane, const contact_point *p)
   q->tangent_mass[lane] = p->tangent_mass;
   q->normal_impulse[lane] = p->normal_impulse;
   q->tangent_impulse[lane] = p->tangent_impulse;
-  q->push_impulse[lane] = 0.0;
   q->total[lane] = p->total_impulse; /* an impact's (contact_impacts) */
 }
 
@@ -100,8 +101,8 @@ static void pack_empty_lane (contact_batch *c, int lane, int32_t inert, int poin
 /* Lane `lane` of batch c: contact k (index `index`). Every field of the
  * lane the kernels read is written (the batches are not cleared between
  * steps): the second point's only where the batch has two (points 2). */
-static void pack_lane (contact_batch *c, int lane, const contact *k, int32_t index, const solver_body *sb,
-                       int points)
+static void pack_lane (contact_batch *restrict c, int lane, const contact *restrict k, int32_t index,
+                       const solver_body *restrict sb, int points)
 {
   const solver_body *a = &sb[k->a], *b = &sb[k->b];
   c->a[lane] = k->a;
