@@ -142,12 +142,19 @@ static inline double effective_mass (const solver_body *a, const solver_body *b,
  * NaN. */
 ALWAYS_INLINE void point_masses_of (contact_point *p, double im, double ii_a, double ii_b)
 {
-  p->normal_mass = effective_mass_of (im, ii_a, ii_b, p->rn_a, p->rn_b);
-  p->tangent_mass = effective_mass_of (im, ii_a, ii_b, p->rt_a, p->rt_b);
-  if (p->normal_mass == 0.0)
-    p->rn_a = p->rn_b = p->normal_impulse = 0.0;
-  if (p->tangent_mass == 0.0)
-    p->rt_a = p->rt_b = p->tangent_impulse = 0.0;
+  /* effective_mass_of, each direction's test made once: its mass is 0
+   * exactly where k is not positive and finite (1 / k of one is at least
+   * 1 / DBL_MAX, which is not 0) */
+  double kn = im + ii_a * p->rn_a * p->rn_a + ii_b * p->rn_b * p->rn_b;
+  double kt = im + ii_a * p->rt_a * p->rt_a + ii_b * p->rt_b * p->rt_b;
+  if (kn > 0.0 && kn <= DBL_MAX)
+    p->normal_mass = 1.0 / kn;
+  else
+    p->normal_mass = p->rn_a = p->rn_b = p->normal_impulse = 0.0;
+  if (kt > 0.0 && kt <= DBL_MAX)
+    p->tangent_mass = 1.0 / kt;
+  else
+    p->tangent_mass = p->rt_a = p->rt_b = p->tangent_impulse = 0.0;
 }
 
 ALWAYS_INLINE void point_masses (contact_point *p, const solver_body *a, const solver_body *b)
