@@ -121,10 +121,15 @@ static inline int contact_lcp2 (double k11, double k12, double k22, double b1, d
 /* The effective mass along d of bodies whose inverse masses sum to im
  * (a->im + b->im, the first sum) and whose inverse inertias are ii_a,
  * ii_b: the functions below on values a caller loaded once for several
- * points. */
+ * points. denominator_of is eq. 3.23's denominator, 1 / the mass. */
+static inline double denominator_of (double im, double ii_a, double ii_b, double ra_d, double rb_d)
+{
+  return im + ii_a * ra_d * ra_d + ii_b * rb_d * rb_d;
+}
+
 static inline double effective_mass_of (double im, double ii_a, double ii_b, double ra_d, double rb_d)
 {
-  double k = im + ii_a * ra_d * ra_d + ii_b * rb_d * rb_d;
+  double k = denominator_of (im, ii_a, ii_b, ra_d, rb_d);
   /* a non-finite k (a body far smaller than the rounding of its
    * coordinates) leaves the point inert rather than poisoning the world;
    * past k > 0 (not NaN), k <= DBL_MAX is isfinite (k) in one comparison */
@@ -145,8 +150,8 @@ ALWAYS_INLINE void point_masses_of (contact_point *p, double im, double ii_a, do
   /* effective_mass_of, each direction's test made once: its mass is 0
    * exactly where k is not positive and finite (1 / k of one is at least
    * 1 / DBL_MAX, which is not 0) */
-  double kn = im + ii_a * p->rn_a * p->rn_a + ii_b * p->rn_b * p->rn_b;
-  double kt = im + ii_a * p->rt_a * p->rt_a + ii_b * p->rt_b * p->rt_b;
+  double kn = denominator_of (im, ii_a, ii_b, p->rn_a, p->rn_b);
+  double kt = denominator_of (im, ii_a, ii_b, p->rt_a, p->rt_b);
   if (kn > 0.0 && kn <= DBL_MAX)
     p->normal_mass = 1.0 / kn;
   else
