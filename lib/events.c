@@ -47,10 +47,10 @@ static uint32_t pair_hash (carom_body_id a, carom_body_id b, int32_t sensor)
 
 static int32_t find (const events *e, const touch *old, int32_t mask, const touch *t)
 {
-  uint32_t i = pair_hash (t->a, t->b, t->sensor) & (uint32_t) mask;
+  uint32_t i = t->hash & (uint32_t) mask;
   for (;; i = (i + 1) & (uint32_t) mask)
     {
-      int32_t k = e->table[i];
+      int32_t k = e->table[i] - e->table_base;
       if (k < 0)
         return -1;
       if (old[k].a == t->a && old[k].b == t->b && old[k].sensor == t->sensor)
@@ -68,24 +68,29 @@ static int point_touches (const contact_point *p)
  * some point overlaps or received impulse in the update. */
 static int32_t contact_touches (const carom_world *world, touch *out)
 {
-  const contacts *c = &world->contacts;
-  int32_t i = 0, n = 0;
-  while (i < c->count)
+  /* the list and its count in locals: through the int32_t stores to out,
+   * which might alias them as far as the compiler knows, every use would
+   * reload them */
+  const contact *list = world->contacts.list;
+  const body *bodies = world->bodies;
+  int32_t count = world->contacts.count, i = 0, n = 0;
+  while (i < count)
     {
-      int32_t a = c->list[i].a, b = c->list[i].b, first = i, j;
+      int32_t a = list[i].a, b = list[i].b, first = i, j;
       const contact_point *found = NULL;
-      for (; i < c->count && c->list[i].a == a && c->list[i].b == b; ++i)
-        for (j = 0; j < c->list[i].count && !found; ++j)
-          if (point_touches (&c->list[i].points[j]))
-            found = &c->list[i].points[j];
+      touch *t;
+      for (; i < count && list[i].a == a && list[i].b == b; ++i)
+        for (j = 0; j < list[i].count && !found; ++j)
+          if (point_touches (&list[i].points[j]))
+            found = &list[i].points[j];
       if (!found)
         continue;
-      out[n].a = body_slot_id (&world->bodies[a], a);
-      out[n].b = body_slot_id (&world->bodies[b], b);
-      out[n].x = found->point.x, out[n].y = found->point.y;
-      out[n].first = first;
-      out[n].sensor = out[n].seen = 0;
-      ++n;
+      t = &out[n++];
+      t->a = body_slot_id (&bodies[a], a);
+      t->b = body_slot_id (&bodies[b], b);
+      t->x = found->point.x, t->y = found->point.y;
+      t->first = first;
+      t->sensor = t->seen = 0;
     }
   return n;
 }
@@ -173,21 +178,38 @@ void events_update (carom_world *world)
   e->count[now] = n;
   e->event_count = 0;
   e->cur = now;
+  e->hashed[now] = 0;
   if (same_pairs (old, e->count[last], cur, n))
     return;
-  for (i = 0; i <= mask; ++i)
-    e->table[i] = -1;
+  /* the table is not cleared for each update: the values an earlier one
+   * left are below this one's base, and so empty; only a table just
+   * grown (its new part unset), or a base that would pass INT32_MAX,
+   * starts again from -1 everywhere */
+  if (e->table_set != e->table_cap || e->table_base > INT32_MAX - e->count[last])
+    {
+      for (i = 0; i < e->table_cap; ++i)
+        e->table[i] = -1;
+      e->table_set = e->table_cap;
+      e->table_base = 0;
+    }
+  /* the hashes are computed only when a table is built, for the steady
+   * scene that needs none, and this update's are kept for the next */
+  if (!e->hashed[last])
+    for (i = 0; i < e->count[last]; ++i)
+      old[i].hash = pair_hash (old[i].a, old[i].b, old[i].sensor);
   for (i = 0; i < e->count[last]; ++i)
     {
-      uint32_t h = pair_hash (old[i].a, old[i].b, old[i].sensor) & (uint32_t) mask;
-      while (e->table[h] >= 0)
+      uint32_t h = old[i].hash & (uint32_t) mask;
+      while (e->table[h] >= e->table_base)
         h = (h + 1) & (uint32_t) mask;
-      e->table[h] = i;
+      e->table[h] = e->table_base + i;
       old[i].seen = 0;
     }
   for (i = 0; i < n; ++i)
     {
-      int32_t k = find (e, old, mask, &cur[i]);
+      int32_t k;
+      cur[i].hash = pair_hash (cur[i].a, cur[i].b, cur[i].sensor);
+      k = find (e, old, mask, &cur[i]);
       if (k >= 0)
         old[k].seen = 1;
       else
@@ -201,6 +223,8 @@ void events_update (carom_world *world)
         else
           emit_end (e, &old[i]);
       }
+  e->table_base += e->count[last];
+  e->hashed[now] = 1;
 }
 
 int32_t carom_world_get_events (const carom_world *world, carom_contact_event *list, int32_t capacity)

@@ -16,14 +16,20 @@ typedef struct touch {
                          update (what a begin event reads), -1 for a sensor */
   int32_t sensor;     /* a is a sensor, b overlaps it */
   int32_t seen;       /* (as the last update's) touches in this one too */
+  uint32_t hash;      /* pair_hash of a, b and sensor (events.c), once a
+                         table needed it: kept for the update after */
 } touch;
 
 typedef struct events {
   touch *touches[2];  /* this update's and the last one's, in turn */
   int32_t count[2], cap[2];
+  int32_t hashed[2];  /* their hash fields are set */
   int32_t cur;        /* which is the last update's */
-  int32_t *table;     /* open addressing over the last update's */
+  int32_t *table;     /* open addressing over the last update's: base + its
+                         index, and any value below base is an empty slot */
   int32_t table_cap;
+  int32_t table_base; /* above every value an earlier update left */
+  int32_t table_set;  /* table_cap when the table was last filled with -1 */
   carom_contact_event *list;
   int32_t event_count, event_cap;
 } events;
