@@ -67,11 +67,21 @@ void body_wake (body *b)
   b->inv_inertia = b->fixed_rotation ? 0.0 : 1.0 / b->inertia;
 }
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+
+/* xform_apply of the vertex v as a pair of lanes, the rotation given as
+ * (c, s) and (-s, c) and the translation as (p.x, p.y). */
+ALWAYS_INLINE __m128d turn_move (__m128d cs, __m128d nsc, __m128d p, const vec2 *v)
+{
+  return _mm_add_pd (_mm_add_pd (_mm_mul_pd (cs, _mm_load1_pd (&v->x)), _mm_mul_pd (nsc, _mm_load1_pd (&v->y))), p);
+}
+#endif
+
 /* A circle or polygon shape's box, `center` its centre in the body frame. */
 ALWAYS_INLINE void part_box (const shape *s, vec2 center, xform t, vec2 *lo, vec2 *hi)
 {
   int32_t i;
-  vec2 l, h;
   if (s->kind == CAROM_SHAPE_CIRCLE)
     {
       vec2 c = xform_apply (t, center);
@@ -79,6 +89,28 @@ ALWAYS_INLINE void part_box (const shape *s, vec2 center, xform t, vec2 *lo, vec
       *hi = v2 (c.x + s->radius, c.y + s->radius);
       return;
     }
+#ifdef __SSE2__
+  /* x and y in the two lanes of one register: each lane the operations of
+   * xform_apply, v2_min and v2_max in their order, so the same bits. The
+   * x lane's c x - s y is c x + (-s) y, the same sum (IEEE subtraction
+   * adds the negated operand, and negation is exact); minpd and maxpd
+   * return their first operand when it is less (greater), else the
+   * second, as v2_min (l, v) and v2_max (h, v) do. */
+  {
+    __m128d cs = _mm_set_pd (t.q.s, t.q.c), nsc = _mm_set_pd (t.q.c, -t.q.s), p = _mm_set_pd (t.p.y, t.p.x);
+    __m128d l, h, v;
+    l = h = turn_move (cs, nsc, p, &s->vertices[0]);
+    for (i = 1; i < s->count; ++i)
+      {
+        v = turn_move (cs, nsc, p, &s->vertices[i]);
+        l = _mm_min_pd (l, v);
+        h = _mm_max_pd (h, v);
+      }
+    _mm_storeu_pd (&lo->x, l);
+    _mm_storeu_pd (&hi->x, h);
+  }
+#else
+  vec2 l, h;
   /* in locals: through lo and hi, which might alias the vertices as far
    * as the compiler knows, every step would go through memory */
   l = h = xform_apply (t, s->vertices[0]);
@@ -90,6 +122,7 @@ ALWAYS_INLINE void part_box (const shape *s, vec2 center, xform t, vec2 *lo, vec
     }
   *lo = l;
   *hi = h;
+#endif
 }
 
 void body_sync (body *b)
