@@ -63,6 +63,16 @@ static int point_touches (const contact_point *p)
   return p->depth >= 0.0 || p->total_impulse > 0.0;
 }
 
+/* The contact's first point that touches, or NULL. */
+static const contact_point *first_touching (const contact *c)
+{
+  int32_t j;
+  for (j = 0; j < c->count; ++j)
+    if (point_touches (&c->points[j]))
+      return &c->points[j];
+  return NULL;
+}
+
 /* The contacts of one pair of bodies are consecutive in the list (one
  * broad-phase pair gives all of its pieces' contacts): they touch when
  * some point overlaps or received impulse in the update. */
@@ -76,13 +86,13 @@ static int32_t contact_touches (const carom_world *world, touch *out)
   int32_t count = world->contacts.count, i = 0, n = 0;
   while (i < count)
     {
-      int32_t a = list[i].a, b = list[i].b, first = i, j;
-      const contact_point *found = NULL;
+      int32_t a = list[i].a, b = list[i].b, first = i;
+      const contact_point *found = first_touching (&list[i]);
       touch *t;
-      for (; i < count && list[i].a == a && list[i].b == b; ++i)
-        for (j = 0; j < list[i].count && !found; ++j)
-          if (point_touches (&list[i].points[j]))
-            found = &list[i].points[j];
+      /* the pair's other contacts (the first one's bodies are its own) */
+      for (++i; i < count && list[i].a == a && list[i].b == b; ++i)
+        if (!found)
+          found = first_touching (&list[i]);
       if (!found)
         continue;
       t = &out[n++];
