@@ -45,12 +45,12 @@ static uint32_t pair_hash (carom_body_id a, carom_body_id b, int32_t sensor)
   return (uint32_t) (h >> 32);
 }
 
-static int32_t find (const events *e, const touch *old, int32_t mask, const touch *t)
+static int32_t find (const int32_t *table, int32_t base, const touch *old, int32_t mask, const touch *t)
 {
   uint32_t i = t->hash & (uint32_t) mask;
   for (;; i = (i + 1) & (uint32_t) mask)
     {
-      int32_t k = e->table[i] - e->table_base;
+      int32_t k = table[i] - base;
       if (k < 0)
         return -1;
       if (old[k].a == t->a && old[k].b == t->b && old[k].sensor == t->sensor)
@@ -168,7 +168,8 @@ void events_update (carom_world *world)
 {
   events *e = &world->events;
   const contacts *c = &world->contacts;
-  int32_t last = e->cur, now = 1 - e->cur, mask = table_size (e->count[last]) - 1, i, n;
+  int32_t last = e->cur, now = 1 - e->cur, old_count = e->count[last], mask = table_size (old_count) - 1, i, n;
+  int32_t *table, base;
   touch *old = e->touches[last], *cur = e->touches[now];
   n = contact_touches (world, cur);
   for (i = 0; i < c->sensor_count; ++i)
@@ -189,43 +190,46 @@ void events_update (carom_world *world)
   e->event_count = 0;
   e->cur = now;
   e->hashed[now] = 0;
-  if (same_pairs (old, e->count[last], cur, n))
+  if (same_pairs (old, old_count, cur, n))
     return;
   /* the table is not cleared for each update: the values an earlier one
    * left are below this one's base, and so empty; only a table just
    * grown (its new part unset), or a base that would pass INT32_MAX,
    * starts again from -1 everywhere */
-  if (e->table_set != e->table_cap || e->table_base > INT32_MAX - e->count[last])
+  if (e->table_set != e->table_cap || e->table_base > INT32_MAX - old_count)
     {
       for (i = 0; i < e->table_cap; ++i)
         e->table[i] = -1;
       e->table_set = e->table_cap;
       e->table_base = 0;
     }
+  /* in locals: through the int32_t stores to the table, which might alias
+   * e's fields as far as the compiler knows, every use would reload them */
+  table = e->table, base = e->table_base;
   /* the hashes are computed only when a table is built, for the steady
    * scene that needs none, and this update's are kept for the next */
   if (!e->hashed[last])
-    for (i = 0; i < e->count[last]; ++i)
+    for (i = 0; i < old_count; ++i)
       old[i].hash = pair_hash (old[i].a, old[i].b, old[i].sensor);
-  for (i = 0; i < e->count[last]; ++i)
+  for (i = 0; i < old_count; ++i)
     {
       uint32_t h = old[i].hash & (uint32_t) mask;
-      while (e->table[h] >= e->table_base)
+      while (table[h] >= base)
         h = (h + 1) & (uint32_t) mask;
-      e->table[h] = e->table_base + i;
+      table[h] = base + i;
       old[i].seen = 0;
     }
   for (i = 0; i < n; ++i)
     {
       int32_t k;
       cur[i].hash = pair_hash (cur[i].a, cur[i].b, cur[i].sensor);
-      k = find (e, old, mask, &cur[i]);
+      k = find (table, base, old, mask, &cur[i]);
       if (k >= 0)
         old[k].seen = 1;
       else
         emit_begin (e, world, &cur[i]);
     }
-  for (i = 0; i < e->count[last]; ++i)
+  for (i = 0; i < old_count; ++i)
     if (!old[i].seen)
       {
         if (!old[i].sensor && sleeps_on (world, &old[i]))
@@ -233,7 +237,7 @@ void events_update (carom_world *world)
         else
           emit_end (e, &old[i]);
       }
-  e->table_base += e->count[last];
+  e->table_base = base + old_count;
   e->hashed[now] = 1;
 }
 
