@@ -88,6 +88,17 @@ static void cos_sin_reduced (double r, double *c, double *s)
     }
 #endif
 }
+
+#define SIGN ((uint64_t) 1 << 63)
+#define ALL (~(uint64_t) 0)
+/* After k quarter turns, k mod 4: the mask that swaps the lanes (c, s),
+ * then the sign bits that negate them. */
+static const uint64_t quarter_masks[4][4] = {
+  { 0, 0, 0, 0 },       /* (c, s) */
+  { ALL, ALL, SIGN, 0 }, /* (-s, c) */
+  { 0, 0, SIGN, SIGN },  /* (-c, -s) */
+  { ALL, ALL, 0, SIGN }, /* (s, -c) */
+};
 #else
 static void cos_sin_reduced (double r, double *c, double *s)
 {
@@ -116,6 +127,17 @@ rot2 rot2_from_angle (double angle)
    * (c, s), (-s, c), (-c, -s), (s, -c), on the bits, without branches (a
    * body's quadrant is not predictable): an odd k swaps c and s through
    * a mask, and a negation is the sign bit flipped, as unary minus does */
+#ifdef __SSE2__
+  {
+    /* both lanes at once, the masks of k mod 4 from quarter_masks */
+    const uint64_t *m = quarter_masks[n & 3];
+    __m128d v = _mm_set_pd (s, c), w = _mm_shuffle_pd (v, v, 1);
+    v = _mm_xor_pd (v, _mm_and_pd (_mm_xor_pd (v, w), _mm_castsi128_pd (_mm_loadu_si128 ((const __m128i *) m))));
+    v = _mm_xor_pd (v, _mm_castsi128_pd (_mm_loadu_si128 ((const __m128i *) (m + 2))));
+    q.c = _mm_cvtsd_f64 (v);
+    q.s = _mm_cvtsd_f64 (_mm_unpackhi_pd (v, v));
+  }
+#else
   {
     uint64_t uc, us, swap, m = (uint64_t) 0 - (uint64_t) (n & 1);
     memcpy (&uc, &c, sizeof uc);
@@ -126,5 +148,6 @@ rot2 rot2_from_angle (double angle)
     memcpy (&q.c, &uc, sizeof q.c);
     memcpy (&q.s, &us, sizeof q.s);
   }
+#endif
   return q;
 }
