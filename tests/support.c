@@ -34,7 +34,7 @@ carom_world *world_with (double gx, double gy, double restitution, double fricti
   return w;
 }
 
-double tipping_box_depth (double manifold_tolerance, double side, double degrees)
+double tipping_box_depth (double manifold_tolerance, double side, double degrees, int continuous)
 {
   carom_world *w = NULL;
   carom_world_def def;
@@ -46,6 +46,7 @@ double tipping_box_depth (double manifold_tolerance, double side, double degrees
   def.friction = 0.6;
   def.manifold_tolerance = manifold_tolerance;
   assert_status (carom_world_init (&w, &def), CAROM_OK);
+  assert_status (carom_world_set_continuous (w, continuous), CAROM_OK);
   add_box (w, CAROM_STATIC, 0, -0.5, 0, 100, 1);
   box = add_box (w, CAROM_DYNAMIC, 0, 0.5 * side * (cos (a) + sin (a)) + 0.001 * side, a, side, side);
   for (step = 0; step < 240; ++step)

@@ -53,7 +53,7 @@ carom_world *world_with (double gx, double gy, double restitution, double fricti
  * tolerance, the other settings the defaults) tips over onto its face in
  * 4 s: the deepest any of its corners reaches below the ground, over the
  * side. */
-double tipping_box_depth (double manifold_tolerance, double side, double degrees);
+double tipping_box_depth (double manifold_tolerance, double side, double degrees, int continuous);
 
 /* Add a width x height box of the given type at (x, y), turned by angle;
  * asserts that it was added and returns its id. */

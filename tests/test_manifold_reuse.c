@@ -166,26 +166,30 @@ static void test_zero_never_reuses_and_stack_agrees (void **state)
  * and a manifold kept while the box turns by more than the contact margin
  * can catch would let it land deep. At the default tolerance, boxes of
  * side 0.5, 1 and 3 tipping from 3 to 43 degrees land no deeper than when
- * every step is computed afresh (within 5% and 1e-4 of the side); a looser
- * tolerance (0.05) does not hold this. */
+ * every step is computed afresh (within 5% and 1e-4 of the side), with
+ * continuous collision on (the default) and off; a looser tolerance (0.05)
+ * does not hold this. */
 static void test_tipping_box_lands_as_deep_as_without_reuse (void **state)
 {
   static const double sides[] = { 0.5, 1.0, 3.0 };
   carom_world_def def;
   size_t i;
-  int deg;
+  int deg, cont;
   double worst = 0.0;
   (void) state;
   carom_world_def_init (&def, sizeof def);
-  for (i = 0; i < sizeof sides / sizeof sides[0]; ++i)
-    for (deg = 3; deg <= 43; deg += 4)
-      {
-        double fresh = tipping_box_depth (0.0, sides[i], deg), kept = tipping_box_depth (def.manifold_tolerance, sides[i], deg);
-        if (!(kept <= 1.05 * fresh + 1e-4))
-          fail_msg ("side %g, %d degrees: the landing corner sank %.4g of the side with reuse, %.4g without", sides[i],
-                    deg, kept, fresh);
-        worst = fmax (worst, kept);
-      }
+  for (cont = 0; cont < 2; ++cont)
+    for (i = 0; i < sizeof sides / sizeof sides[0]; ++i)
+      for (deg = 3; deg <= 43; deg += 4)
+        {
+          double fresh = tipping_box_depth (0.0, sides[i], deg, cont);
+          double kept = tipping_box_depth (def.manifold_tolerance, sides[i], deg, cont);
+          if (!(kept <= 1.05 * fresh + 1e-4))
+            fail_msg ("side %g, %d degrees, continuous %d: the landing corner sank %.4g of the side with reuse, %.4g "
+                      "without",
+                      sides[i], deg, cont, kept, fresh);
+          worst = fmax (worst, kept);
+        }
   print_message ("tipping boxes: deepest landing %.4g of the side\n", worst);
 }
 
