@@ -948,7 +948,10 @@ int32_t contacts_after_impacts (carom_world *world, const step_context *ctx)
        * looked ahead by the bodies' relative motion at the old ones: any
        * change can bring it to a body it had no contact with. */
       r = fmax (body_reach_at (B, sb[i].v, sb[i].w, ctx->dt, ctx->accel), world->broad.reach[i]);
-      if (!body_swept (B, r, ctx->dt, ctx->accel, ctx->continuous))
+      /* a reach of 0 (at rest before and after, no gravity) meets nothing
+       * new, and would not mark the body as queried (reach[i] != 0), which
+       * would pair its box with its own entry */
+      if (!(r > 0.0) || !body_swept (B, r, ctx->dt, ctx->accel, ctx->continuous))
         continue;
       reach[i] = r;
       broadphase_box (world, i, r, &boxes[k++]);
