@@ -25,6 +25,7 @@ void contacts_destroy (carom_world *world)
   mem_free (&world->allocator, c->table, (size_t) c->table_cap * sizeof (int32_t));
   mem_free (&world->allocator, c->sensors, (size_t) c->sensor_cap * sizeof (int32_t));
   mem_free (&world->allocator, c->pushed, (size_t) c->pushed_cap);
+  mem_free (&world->allocator, c->deferred, (size_t) c->deferred_cap * sizeof (int32_t));
   memset (c, 0, sizeof *c);
 }
 
@@ -427,6 +428,42 @@ static int clear_of_step (const carom_world *world, int32_t a, int32_t b, int32_
          >= world->contacts.dt;
 }
 
+/* Whether two bodies in free flight, their bounding circles (which hold
+ * each body at any angle, about its centre) more than the slop apart, stay
+ * so through the step dt: no turn of theirs then brings any piece within
+ * the slop of the other, and the pair is clear of the step (as
+ * clear_of_step, for a price below one narrow phase). The first time
+ * |d + v t| comes down to the radii and the slop, d and v B's position and
+ * velocity less A's, is the smaller root of a quadratic, in the form that
+ * does not cancel; none that comes later than dt, or none at all, is
+ * clear. */
+static int circles_clear_of_step (const body *A, const body *B, double slop, double dt)
+{
+  vec2 d = v2_sub (B->p, A->p), v = v2_sub (B->v, A->v);
+  double r = A->shape.bound_radius + B->shape.bound_radius + slop, c = v2_dot (d, d) - r * r, dv = v2_dot (d, v), disc;
+  if (!(c > 0.0))
+    return 0;
+  if (!(dv < 0.0))
+    return 1; /* not closing */
+  disc = dv * dv - v2_dot (v, v) * c;
+  return disc < 0.0 || c > dt * (sqrt (disc) - dv);
+}
+
+/* Keep pair a, b (in the narrow phase's order) for redetect_deferred. */
+static void defer_pair (carom_world *world, int32_t a, int32_t b)
+{
+  contacts *c = &world->contacts;
+  if (!mem_reserve (&world->allocator, (void **) &c->deferred, &c->deferred_cap, 2 * (c->deferred_count + 1),
+                    sizeof (int32_t)))
+    {
+      c->out_of_memory = 1;
+      return;
+    }
+  c->deferred[2 * c->deferred_count] = a;
+  c->deferred[2 * c->deferred_count + 1] = b;
+  c->deferred_count++;
+}
+
 /* The narrow phase for one pair of pieces, or last step's points moved
  * (reuse_contact), then the contact. */
 static void pair_pieces (carom_world *world, int32_t pa, int32_t pb, const pair_context *pc, manifold *m, int can_reuse)
@@ -752,7 +789,8 @@ int contact_pair_swept (const carom_world *world, int32_t a, int32_t b, const st
  * pair can close in the step, from the bodies' velocities; `reach`, when
  * not negative, is that distance instead (velocities an impact changed
  * within the step, contacts_after_impacts). */
-static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_context *ctx, double reach)
+static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_context *ctx, double reach,
+                         int may_defer)
 {
   body *A, *B;
   pair_context pc;
@@ -807,6 +845,13 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
     pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], 0)
                 + body_reach_capped (B, world->broad.reach[b], 0);
   pc.bouncy_swept = ctx->free_flight && reach < 0.0 && swept && pc.restitution > 0.0;
+  /* clear of the step by the bodies' bounding circles: no narrow phase
+   * unless a body of the pair turns out pushed (redetect_deferred) */
+  if (pc.bouncy_swept && may_defer && circles_clear_of_step (A, B, pc.slop, ctx->dt))
+    {
+      defer_pair (world, a, b);
+      return;
+    }
   pc.margin_kept = reach >= 0.0 ? pc.margin : pc.slop + world->broad.reach[a] + world->broad.reach[b];
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
@@ -859,7 +904,7 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
 
 static void on_pair (carom_world *world, int32_t a, int32_t b, void *user)
 {
-  detect_pair (world, a, b, user, -1.0);
+  detect_pair (world, a, b, user, -1.0, 1);
 }
 
 /* ------------------------------------------------------- after impacts */
@@ -922,7 +967,7 @@ static void on_struck_pair (carom_world *world, int32_t s, int32_t o, void *user
       ai->full = 1;
       return;
     }
-  detect_pair (world, s, o, ctx, ctx->dt * (closing_speed (S, &sb[s], O, &sb[o]) + fall));
+  detect_pair (world, s, o, ctx, ctx->dt * (closing_speed (S, &sb[s], O, &sb[o]) + fall), 0);
 }
 
 int32_t contacts_after_impacts (carom_world *world, const step_context *ctx)
@@ -1004,19 +1049,13 @@ void contacts_point_again (carom_world *world)
   point_contacts (&world->contacts);
 }
 
-/* Drop the contacts found clear of the step (clear_of_step) whose dynamic
- * bodies nothing but an impact can push within it: no other contact of
- * theirs is within the slop, and they have no joint. Free flight, which
- * the verdict assumed, is then theirs until an impact, after which
- * contacts_after_impacts looks again. A body held by a joint, or pressed
- * against another (squeezed between two, or pushed out of an overlap),
- * keeps every contact. The rest keep their order, and their points stay
- * in a row. */
-static void drop_clear (carom_world *world)
+/* Mark (c->pushed) the bodies drop_clear keeps every contact of: those
+ * with a joint or a contact within the slop. */
+static void mark_pushed (carom_world *world)
 {
   contacts *c = &world->contacts;
   unsigned char *pushed = c->pushed;
-  int32_t i, j, end, n = 0, points = 0;
+  int32_t i, j;
   for (i = 0; i < world->slot_count; ++i)
     pushed[i] = world->bodies[i].alive && world->bodies[i].joint_count > 0;
   for (i = 0; i < c->count; ++i)
@@ -1031,6 +1070,22 @@ static void drop_clear (carom_world *world)
             break;
           }
     }
+}
+
+/* Drop the contacts found clear of the step (clear_of_step) whose dynamic
+ * bodies nothing but an impact can push within it: no other contact of
+ * theirs is within the slop, and they have no joint. Free flight, which
+ * the verdict assumed, is then theirs until an impact, after which
+ * contacts_after_impacts looks again. A body held by a joint, or pressed
+ * against another (squeezed between two, or pushed out of an overlap),
+ * keeps every contact. The rest keep their order, and their points stay
+ * in a row. */
+static void drop_clear (carom_world *world)
+{
+  contacts *c = &world->contacts;
+  const unsigned char *pushed = c->pushed;
+  int32_t i, j, end, n = 0, points = 0;
+  mark_pushed (world);
   /* a pair's contacts (of several pieces) lie in a row; they go together
    * or not at all (contacts_after_impacts takes a pair with any contact
    * as found) */
@@ -1062,6 +1117,24 @@ static void drop_clear (carom_world *world)
   c->point_count = points;
 }
 
+/* The pairs found clear of the step by their bounding circles alone
+ * (detect_pair) whose flight is not free after all, a body of theirs
+ * pushed (mark_pushed): their contacts, as drop_clear keeps them. The
+ * contacts these add lie beyond the slop, so mark no body pushed. */
+static void redetect_deferred (carom_world *world, const step_context *ctx)
+{
+  contacts *c = &world->contacts;
+  const unsigned char *pushed = c->pushed;
+  int32_t i;
+  mark_pushed (world);
+  for (i = 0; i < c->deferred_count; ++i)
+    {
+      int32_t a = c->deferred[2 * i], b = c->deferred[2 * i + 1];
+      if ((world->bodies[a].type == CAROM_DYNAMIC && pushed[a]) || (world->bodies[b].type == CAROM_DYNAMIC && pushed[b]))
+        detect_pair (world, a, b, ctx, -1.0, 0);
+    }
+}
+
 carom_status contacts_update (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
@@ -1080,13 +1153,15 @@ carom_status contacts_update (carom_world *world, const step_context *ctx)
   c->room_count = c->room_points = 0;
   c->sensor_count = 0;
   c->clear_count = 0;
+  c->deferred_count = 0;
   c->dt = ctx->dt;
   c->out_of_memory = 0;
   c->cursor = 0;
   c->table_built = 0;
   if (world->seams_dirty)
     seams_update (world);
-  if (!broadphase_update (world, ctx, on_pair, (void *) ctx) || c->out_of_memory)
+  if (!broadphase_update (world, ctx, on_pair, (void *) ctx) || c->out_of_memory
+      || (c->deferred_count > 0 && (redetect_deferred (world, ctx), c->out_of_memory)))
     {
       contacts_undo (world); /* the world is as it was */
       return CAROM_ERR_OUT_OF_MEMORY;

@@ -133,6 +133,10 @@ typedef struct contacts {
                             an impact may push within the step (a contact
                             within the slop, a joint): drop_clear */
   int32_t pushed_cap;
+  int32_t *deferred;     /* this detection's bouncy pairs whose bounding
+                            circles stay apart through the step
+                            (circles_clear_of_step): pairs of slots */
+  int32_t deferred_count, deferred_cap; /* pairs, and room in int32_t */
   int out_of_memory;
 } contacts;
 
