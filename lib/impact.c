@@ -48,6 +48,14 @@
 /* Only for contacts whose moving bodies touched at most this many other
  * moving bodies each at detection (sparse). */
 #define REIMPACT_DEGREE 2
+/* One pair of bodies meeting through several contacts at once (pieces of a
+ * concave or compound body) takes one impact on all of them
+ * (impact_group_event), of at most this many contacts; its solve passes
+ * stop when no impulse changes by more than IMPACT_GROUP_TOLERANCE of the
+ * largest, at most IMPACT_GROUP_PASSES. */
+#define IMPACT_GROUP_MAX 8
+#define IMPACT_GROUP_TOLERANCE 1e-13
+#define IMPACT_GROUP_PASSES 1000
 /* Times a step looks for the new pairs of bodies its impacts set moving
  * (contacts_after_impacts), each after the impacts found so far. */
 #define AFTER_IMPACT_PASSES 4
@@ -560,6 +568,147 @@ static int impact_event (contact *k, solver_body *a, solver_body *b, impact_shif
   return 1;
 }
 
+/* The points of an impact on several contacts of one pair of bodies
+ * (impact_group_event), and each one's own. */
+typedef struct group_point {
+  contact *k;
+  contact_point *p;
+  double fall;   /* its relative_fall times t */
+  double target; /* the normal speed it may leave with, at least */
+  double lambda;
+} group_point;
+
+/* The impact at time t of a pair of bodies that meets through the `count`
+ * contacts of `group` at once (the first, the one whose impact it is; the
+ * others the contacts of its pair of bodies whose pieces are within the
+ * slop of touching then, whose points of the touch touch_points took): as
+ * one contact's two points are one block (impact_event), all of their
+ * points together. Each closing point leaves at e times the speed it met
+ * with, no faster where the others' impulses push it off; one already
+ * leaving is pushed back to minus its speed at most (the time reverse of a
+ * bounce, so no impulse adds energy): the impulses lambda >= 0 of that
+ * complementarity problem, found by projected Gauss-Seidel passes on the
+ * fixed targets until they settle. Taken one contact after the other (the
+ * sequential model), an H landing flat on its two feet would leave turning,
+ * the first foot's bounce tipping it onto the second. Otherwise as
+ * impact_event: friction, the totals, the shifts. Returns whether it
+ * acted. */
+static int impact_group_event (contact *const *group, int32_t count, solver_body *a, solver_body *b,
+                               impact_shift *shifts, const step_context *ctx, double t, double tol)
+{
+  group_point g[IMPACT_GROUP_MAX * MANIFOLD_MAX_POINTS];
+  vec2 va = a->v, vb = b->v;
+  double wa = a->w, wb = b->w, largest;
+  int32_t i, j, m, n = 0, pass, closing = 0;
+  for (m = 0; m < count; ++m)
+    for (j = 0; j < group[m]->count; ++j)
+      {
+        contact *k = group[m];
+        contact_point *p = &k->points[j];
+        double speed;
+        if (!takes_impact (p) || p->normal_mass == 0.0)
+          continue;
+        g[n].k = k, g[n].p = p, g[n].lambda = 0.0;
+        g[n].fall = relative_fall (a, b, p->normal, ctx) * t;
+        speed = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + g[n].fall;
+        g[n].target = speed < 0.0 ? -k->restitution * speed : -speed;
+        closing |= speed < -(tol + impact_threshold (ctx, p->normal));
+        ++n;
+      }
+  if (!closing)
+    return 0;
+  for (pass = 0; pass < IMPACT_GROUP_PASSES; ++pass)
+    {
+      double change = 0.0;
+      largest = 0.0;
+      for (i = 0; i < n; ++i)
+        {
+          contact_point *p = g[i].p;
+          double vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + g[i].fall;
+          double next = g[i].lambda + (g[i].target - vn) * p->normal_mass, d;
+          next = next > 0.0 ? next : 0.0;
+          d = next - g[i].lambda;
+          g[i].lambda = next;
+          contact_push (a, b, p->normal, p->rn_a, p->rn_b, d);
+          change = fabs (d) > change ? fabs (d) : change;
+          largest = next > largest ? next : largest;
+        }
+      if (!(change > IMPACT_GROUP_TOLERANCE * largest))
+        break;
+    }
+  for (m = 0; m < count; ++m)
+    {
+      contact *k = group[m];
+      double lambda[MANIFOLD_MAX_POINTS] = {0.0, 0.0, 0.0, 0.0};
+      for (i = 0; i < n; ++i)
+        if (g[i].k == k)
+          {
+            lambda[g[i].p - k->points] = g[i].lambda;
+            g[i].p->total_impulse += g[i].lambda;
+            g[i].p->impact_moment += g[i].lambda * t;
+          }
+      impact_friction (k, a, b, ctx, t, lambda);
+      for (j = 0; j < k->count; ++j)
+        if (takes_impact (&k->points[j]) && k->points[j].normal_mass > 0.0)
+          {
+            k->points[j].approach = 0.0;
+            k->points[j].in_impact = IMPACT_BOUNCED;
+          }
+      k->met = 1;
+    }
+  shifts[group[0]->a].p = v2_mad (shifts[group[0]->a].p, -t, v2_sub (a->v, va));
+  shifts[group[0]->a].a -= (a->w - wa) * t;
+  shifts[group[0]->b].p = v2_mad (shifts[group[0]->b].p, -t, v2_sub (b->v, vb));
+  shifts[group[0]->b].a -= (b->w - wb) * t;
+  shifts[group[0]->a].at = shifts[group[0]->b].at = t;
+  return 1;
+}
+
+/* The contacts of contact `index`'s pair of bodies (a row of the list,
+ * contact.c) that meet with it at time t: seeded at t, or their pieces
+ * within the slop of touching then (the bodies in their flight since the
+ * impacts, impact_shift), their points of that touch taken (touch_points);
+ * into group after the contact itself, at most IMPACT_GROUP_MAX in all.
+ * Returns how many. */
+static int32_t impact_group (carom_world *world, int32_t index, const step_context *ctx, double t, contact **group)
+{
+  contacts *c = &world->contacts;
+  contact *k = &c->list[index];
+  const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
+  solver_body *a = &world->solver_bodies[k->a], *b = &world->solver_bodies[k->b];
+  int32_t lo = index, hi = index + 1, i, j, n = 1;
+  group[0] = k;
+  while (lo > 0 && c->list[lo - 1].a == k->a && c->list[lo - 1].b == k->b)
+    --lo;
+  while (hi < c->count && c->list[hi].a == k->a && c->list[hi].b == k->b)
+    ++hi;
+  for (i = lo; i < hi && n < IMPACT_GROUP_MAX; ++i)
+    {
+      contact *o = &c->list[i];
+      uint32_t taken;
+      vec2 axis;
+      if (o == k || o->count == 0 || o->restitution == 0.0)
+        continue;
+      if (!(o->pending && o->impact_at == t)
+          && !(contact_separation_at (world, o, toi_pose (world, o->a, a, ctx, t, &world->impact_shifts[o->a]),
+                                      toi_pose (world, o->b, b, ctx, t, &world->impact_shifts[o->b]), &axis)
+               <= o->slop))
+        continue;
+      impact_keep (world, o);
+      taken = touch_points (world, o, ba, bb, a, b, ctx, t, NULL, world->impact_shifts, 0, 0);
+      if (!taken)
+        continue;
+      for (j = 0; j < o->count; ++j)
+        if (!(taken & (1u << j)))
+          o->points[j].in_impact = o->points[j].in_impact == IMPACT_BOUNCED ? IMPACT_DONE
+                                   : o->points[j].in_impact == 1           ? 0
+                                                                            : o->points[j].in_impact;
+      pair_matrix (o, a, b);
+      group[n++] = o;
+    }
+  return n;
+}
+
 /* Contact k's next touch within the step after an impact at t changed its
  * bodies' velocities (its own, or one passed on through its bodies): the
  * time of impact from t in their flight since (impact_shift), from a moment
@@ -702,7 +851,8 @@ static int impacts_run (carom_world *world, const step_context *ctx, int may_sto
   impact_shift *shifts = world->impact_shifts;
   int32_t *seeds = world->restitution_list, *work = world->batch_scratch, *events = world->impact_events;
   int32_t *start = NULL, *adj = NULL;
-  int32_t i, j, n = 0, head = 0, round = 0, passes = 0;
+  int32_t i, j, m, n = 0, head = 0, round = 0, passes = 0, members;
+  contact *group[IMPACT_GROUP_MAX];
   double fastest = 0.0, tol;
   c->impacts = 0;
   for (i = 0; i <= world->slot_count; ++i)
@@ -743,12 +893,20 @@ static int impacts_run (carom_world *world, const step_context *ctx, int may_sto
           k->queued = 0;
           ++tried;
           impact_keep (world, k);
-          if (!impact_event (k, &sb[k->a], &sb[k->b], shifts, ctx, t, tol))
+          members = impact_group (world, index, ctx, t, group);
+          if (!(members > 1 ? impact_group_event (group, members, &sb[k->a], &sb[k->b], shifts, ctx, t, tol)
+                            : impact_event (k, &sb[k->a], &sb[k->b], shifts, ctx, t, tol)))
             continue;
           ++c->impacts;
-          if (k->event_round != round)
-            events[acted++] = index;
-          k->event_round = round;
+          for (m = 0; m < members; ++m)
+            {
+              int32_t at = (int32_t) (group[m] - c->list);
+              if (group[m]->event_round != round)
+                events[acted++] = at;
+              group[m]->event_round = round;
+              if (m > 0 && group[m]->pending)
+                seed_remove (c, seeds, head, &n, at);
+            }
           for (side = 0; side < 2; ++side)
             {
               int32_t body = side ? k->b : k->a;
