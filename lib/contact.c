@@ -1130,7 +1130,8 @@ static void redetect_deferred (carom_world *world, const step_context *ctx)
   for (i = 0; i < c->deferred_count; ++i)
     {
       int32_t a = c->deferred[2 * i], b = c->deferred[2 * i + 1];
-      if ((world->bodies[a].type == CAROM_DYNAMIC && pushed[a]) || (world->bodies[b].type == CAROM_DYNAMIC && pushed[b]))
+      if ((world->bodies[a].type == CAROM_DYNAMIC && pushed[a])
+          || (world->bodies[b].type == CAROM_DYNAMIC && pushed[b]))
         detect_pair (world, a, b, ctx, -1.0, 0);
     }
 }

@@ -568,6 +568,20 @@ static int impact_event (contact *k, solver_body *a, solver_body *b, impact_shif
   return 1;
 }
 
+/* Contact k's points after a touch took those of `taken` (touch_points,
+ * a bit each): the others take no part in its impact (one that bounced
+ * earlier in the step is done), and its matrix is its points' now. */
+static void touch_taken (contact *k, uint32_t taken, const solver_body *a, const solver_body *b)
+{
+  int32_t j;
+  for (j = 0; j < k->count; ++j)
+    if (!(taken & (1u << j)))
+      k->points[j].in_impact = k->points[j].in_impact == IMPACT_BOUNCED ? IMPACT_DONE
+                               : k->points[j].in_impact == 1           ? 0
+                                                                        : k->points[j].in_impact;
+  pair_matrix (k, a, b);
+}
+
 /* The points of an impact on several contacts of one pair of bodies
  * (impact_group_event), and each one's own. */
 typedef struct group_point {
@@ -676,7 +690,7 @@ static int32_t impact_group (carom_world *world, int32_t index, const step_conte
   contact *k = &c->list[index];
   const body *ba = &world->bodies[k->a], *bb = &world->bodies[k->b];
   solver_body *a = &world->solver_bodies[k->a], *b = &world->solver_bodies[k->b];
-  int32_t lo = index, hi = index + 1, i, j, n = 1;
+  int32_t lo = index, hi = index + 1, i, n = 1;
   group[0] = k;
   while (lo > 0 && c->list[lo - 1].a == k->a && c->list[lo - 1].b == k->b)
     --lo;
@@ -698,12 +712,7 @@ static int32_t impact_group (carom_world *world, int32_t index, const step_conte
       taken = touch_points (world, o, ba, bb, a, b, ctx, t, NULL, world->impact_shifts, 0, 0);
       if (!taken)
         continue;
-      for (j = 0; j < o->count; ++j)
-        if (!(taken & (1u << j)))
-          o->points[j].in_impact = o->points[j].in_impact == IMPACT_BOUNCED ? IMPACT_DONE
-                                   : o->points[j].in_impact == 1           ? 0
-                                                                            : o->points[j].in_impact;
-      pair_matrix (o, a, b);
+      touch_taken (o, taken, a, b);
       group[n++] = o;
     }
   return n;
@@ -751,12 +760,7 @@ static double impact_again (carom_world *world, contact *k, const step_context *
   taken = touch_points (world, k, ba, bb, a, b, ctx, at, &axis, world->impact_shifts, first, 0);
   if (!taken)
     return -1.0;
-  for (j = 0; j < k->count; ++j)
-    if (!(taken & (1u << j)))
-      k->points[j].in_impact = k->points[j].in_impact == IMPACT_BOUNCED ? IMPACT_DONE
-                               : k->points[j].in_impact == 1           ? 0
-                                                                        : k->points[j].in_impact;
-  pair_matrix (k, a, b);
+  touch_taken (k, taken, a, b);
   return at;
 }
 

@@ -344,57 +344,58 @@ static void test_landing_flat_on_several_pieces_is_one_impact (void **state)
       for (rough = 0; rough < 2; ++rough)
         for (slide = 0; slide < 2; ++slide)
           for (tilted = 0; tilted < 2; ++tilted)
-          {
-            double vx0 = slide ? 1.0 : 0.0, y0 = 0.1 + 0.5 * tall + heights[hi];
-            double box_v[2], box_w, box_struck;
-            w = new_world (-9.81, es[ei], rough ? 0.5 : 0.0);
-            add_floor (w);
-            carom_body_def_init (&d, sizeof d);
-            d.y = y0, d.vx = vx0, d.angle = tilted ? 1e-6 : 0.0;
-            assert_status (carom_world_add_box (w, &d, width, tall, &id), CAROM_OK);
-            first_bounce (w, id, &box_v[0], &box_v[1], &box_w, &box_struck);
-            carom_world_destroy (w);
-            for (si = 0; si < 3; ++si)
-              {
-                double left = splits[si] * width, xy1[8], xy2[8];
-                carom_shape_def halves[2];
-                w = new_world (-9.81, es[ei], rough ? 0.5 : 0.0);
-                add_floor (w);
-                halves[0] = box_shape (xy1, -0.5 * width + 0.5 * left, 0.0, 0.0, left, tall, -1.0);
-                halves[1] = box_shape (xy2, 0.5 * left, 0.0, 0.0, width - left, tall, -1.0);
-                carom_body_def_init (&d, sizeof d);
-                d.y = y0, d.vx = vx0, d.angle = tilted ? 1e-6 : 0.0;
-                assert_status (carom_world_add_compound (w, &d, halves, 2, &id), CAROM_OK);
-                first_bounce (w, id, &vx, &vy, &spin, &struck);
-                carom_world_destroy (w);
-                worst_normal = fmax (worst_normal, fabs (vy - box_v[1]) / box_struck);
-                worst_slip = fmax (worst_slip, fmax (fabs (vx - box_v[0]), fabs (spin - box_w) * width) / box_struck);
-                if (!(fabs (vy - box_v[1]) <= 1e-9 * box_struck
-                      && fmax (fabs (vx - box_v[0]), fabs (spin - box_w) * width) <= (rough ? 1e-6 : 1e-9) * box_struck))
-                  fail_msg ("split %.3g, e %g, from %g m, friction %d, sliding %d, tilted %d: the compound leaves at "
-                            "(%.9g, %.9g) turning at %.3g rad/s, the box at (%.9g, %.9g), %.3g rad/s",
-                            splits[si], es[ei], heights[hi], rough, slide, tilted, vx, vy, spin, box_v[0], box_v[1],
-                            box_w);
-                ++cases;
-              }
-            w = new_world (-9.81, es[ei], rough ? 0.5 : 0.0);
-            add_floor (w);
-            carom_body_def_init (&d, sizeof d);
-            d.y = y0, d.vx = vx0, d.angle = tilted ? 1e-6 : 0.0;
-            assert_status (carom_world_add_polygon (w, &d, h_outline, 12, &id), CAROM_OK);
-            first_bounce (w, id, &vx, &vy, &spin, &struck);
-            carom_world_destroy (w);
-            /* landing flat, any body rises as the box does (tilted, its
-             * lowest corner starts higher); one sliding on a rough floor
-             * turns by the friction under it */
-            if (!(rough && slide))
-              worst_h = fmax (worst_h, fabs (spin) * 0.2 / struck);
-            if (!((tilted || fabs (vy - box_v[1]) <= 1e-9 * struck)
-                  && (rough && slide ? 1 : fabs (spin) * 0.2 <= 1e-9 * struck)))
-              fail_msg ("the H, e %g, from %g m, friction %d, sliding %d: leaves at %.9g (the box: %.9g) turning at "
-                        "%.3g rad/s",
-                        es[ei], heights[hi], rough, slide, vy, box_v[1], spin);
-          }
+            {
+              double vx0 = slide ? 1.0 : 0.0, y0 = 0.1 + 0.5 * tall + heights[hi];
+              double box_v[2], box_w, box_struck;
+              w = new_world (-9.81, es[ei], rough ? 0.5 : 0.0);
+              add_floor (w);
+              carom_body_def_init (&d, sizeof d);
+              d.y = y0, d.vx = vx0, d.angle = tilted ? 1e-6 : 0.0;
+              assert_status (carom_world_add_box (w, &d, width, tall, &id), CAROM_OK);
+              first_bounce (w, id, &box_v[0], &box_v[1], &box_w, &box_struck);
+              carom_world_destroy (w);
+              for (si = 0; si < 3; ++si)
+                {
+                  double left = splits[si] * width, xy1[8], xy2[8];
+                  carom_shape_def halves[2];
+                  w = new_world (-9.81, es[ei], rough ? 0.5 : 0.0);
+                  add_floor (w);
+                  halves[0] = box_shape (xy1, -0.5 * width + 0.5 * left, 0.0, 0.0, left, tall, -1.0);
+                  halves[1] = box_shape (xy2, 0.5 * left, 0.0, 0.0, width - left, tall, -1.0);
+                  carom_body_def_init (&d, sizeof d);
+                  d.y = y0, d.vx = vx0, d.angle = tilted ? 1e-6 : 0.0;
+                  assert_status (carom_world_add_compound (w, &d, halves, 2, &id), CAROM_OK);
+                  first_bounce (w, id, &vx, &vy, &spin, &struck);
+                  carom_world_destroy (w);
+                  worst_normal = fmax (worst_normal, fabs (vy - box_v[1]) / box_struck);
+                  worst_slip = fmax (worst_slip, fmax (fabs (vx - box_v[0]), fabs (spin - box_w) * width) / box_struck);
+                  if (!(fabs (vy - box_v[1]) <= 1e-9 * box_struck
+                        && fmax (fabs (vx - box_v[0]), fabs (spin - box_w) * width)
+                               <= (rough ? 1e-6 : 1e-9) * box_struck))
+                    fail_msg ("split %.3g, e %g, from %g m, friction %d, sliding %d, tilted %d: the compound leaves at "
+                              "(%.9g, %.9g) turning at %.3g rad/s, the box at (%.9g, %.9g), %.3g rad/s",
+                              splits[si], es[ei], heights[hi], rough, slide, tilted, vx, vy, spin, box_v[0], box_v[1],
+                              box_w);
+                  ++cases;
+                }
+              w = new_world (-9.81, es[ei], rough ? 0.5 : 0.0);
+              add_floor (w);
+              carom_body_def_init (&d, sizeof d);
+              d.y = y0, d.vx = vx0, d.angle = tilted ? 1e-6 : 0.0;
+              assert_status (carom_world_add_polygon (w, &d, h_outline, 12, &id), CAROM_OK);
+              first_bounce (w, id, &vx, &vy, &spin, &struck);
+              carom_world_destroy (w);
+              /* landing flat, any body rises as the box does (tilted, its
+               * lowest corner starts higher); one sliding on a rough floor
+               * turns by the friction under it */
+              if (!(rough && slide))
+                worst_h = fmax (worst_h, fabs (spin) * 0.2 / struck);
+              if (!((tilted || fabs (vy - box_v[1]) <= 1e-9 * struck)
+                    && (rough && slide ? 1 : fabs (spin) * 0.2 <= 1e-9 * struck)))
+                fail_msg ("the H, e %g, from %g m, friction %d, sliding %d: leaves at %.9g (the box: %.9g) turning at "
+                          "%.3g rad/s",
+                          es[ei], heights[hi], rough, slide, vy, box_v[1], spin);
+            }
   print_message ("%d compounds left the floor as their box did: normal speed within %.3g, slip and turn within %.3g "
                  "of the speed they struck with; the H turning at most %.3g of it\n",
                  cases, worst_normal, worst_slip, worst_h);
