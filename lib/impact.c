@@ -494,7 +494,7 @@ static void impact_friction (contact *k, solver_body *a, solver_body *b, const s
  * there faster than `tol` beyond its impact_threshold: each point's normal
  * speed then (the bodies' velocities now, plus what gravity adds until t)
  * leaves at minus e times itself; eq. 3.23 for one point, both at once (the
- * 2x2 problem) for two. Its impulses count towards the step's totals, and
+ * 2x2 problem) for two (more than two: impact_group_event). Its impulses count towards the step's totals, and
  * each body's velocity change times t towards its shift (impact_shift),
  * the move that puts it where an impulse at t leaves it
  * (contact_time_of_impact); the bounce is an event of its step and is not
@@ -604,9 +604,10 @@ typedef struct group_point {
  * complementarity problem, found by projected Gauss-Seidel passes on the
  * fixed targets until they settle. Taken one contact after the other (the
  * sequential model), an H landing flat on its two feet would leave turning,
- * the first foot's bounce tipping it onto the second. Otherwise as
- * impact_event: friction, the totals, the shifts. Returns whether it
- * acted. */
+ * the first foot's bounce tipping it onto the second. The same for one
+ * contact of more than two points (count 1: the vertex-edge method's
+ * concave outline, both feet in one contact). Otherwise as impact_event:
+ * friction, the totals, the shifts. Returns whether it acted. */
 static int impact_group_event (contact *const *group, int32_t count, solver_body *a, solver_body *b,
                                impact_shift *shifts, const step_context *ctx, double t, double tol)
 {
@@ -898,7 +899,7 @@ static int impacts_run (carom_world *world, const step_context *ctx, int may_sto
           ++tried;
           impact_keep (world, k);
           members = impact_group (world, index, ctx, t, group);
-          if (!(members > 1 ? impact_group_event (group, members, &sb[k->a], &sb[k->b], shifts, ctx, t, tol)
+          if (!(members > 1 || k->count > 2 ? impact_group_event (group, members, &sb[k->a], &sb[k->b], shifts, ctx, t, tol)
                             : impact_event (k, &sb[k->a], &sb[k->b], shifts, ctx, t, tol)))
             continue;
           ++c->impacts;
