@@ -138,8 +138,13 @@ void joint_rows_add (joint *j, const double *impulse);
  * CAROM_MAX_MAGNITUDE: a joint's pass is kept only if they stay so. */
 int joint_sane (const struct solver_body *b);
 /* The same of a body with velocities v, w and motion dp, da since the
- * step began. */
-int joint_motion_sane (vec2 v, double w, vec2 dp, double da);
+ * step began (each pass of the direct solve asks it of every body: one
+ * test of the six, without a branch for each; a NaN fails it as well). */
+static inline int joint_motion_sane (vec2 v, double w, vec2 dp, double da)
+{
+  return (fabs (v.x) <= MAX_MAGNITUDE) & (fabs (v.y) <= MAX_MAGNITUDE) & (fabs (w) <= MAX_MAGNITUDE)
+         & (fabs (dp.x) <= MAX_MAGNITUDE) & (fabs (dp.y) <= MAX_MAGNITUDE) & (fabs (da) <= MAX_MAGNITUDE);
+}
 
 /* The direct solve (joint_tree.c): the joints whose bodies form a tree
  * (each tree at most one joint to the ground), solved exactly in each pass

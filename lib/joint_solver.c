@@ -246,13 +246,6 @@ static vec2 anchor_velocity (const solver_body *A, const solver_body *B, const f
  * act on: finite and within CAROM_MAX_MAGNITUDE. A pass that would leave
  * them otherwise (forces beyond any joint's hold, a joint stretched across
  * the doubles) is dropped for that joint: it holds what it can. */
-int joint_motion_sane (vec2 v, double w, vec2 dp, double da)
-{
-  /* is_moderate is false for NaN and the infinities too */
-  return is_moderate (v.x) && is_moderate (v.y) && is_moderate (w) && is_moderate (dp.x) && is_moderate (dp.y)
-         && is_moderate (da);
-}
-
 int joint_sane (const solver_body *b)
 {
   return joint_motion_sane (b->v, b->w, b->dp, b->da);

@@ -508,8 +508,10 @@ static double clamp_error (double c, const double *ja, const double *jb, double 
 }
 
 /* Each joint's rows where the bodies are now, and the system's blocks
- * from them, factored: K = J M^-1 J^T for the passes that follow. */
-static void refactor (carom_world *world)
+ * from them, factored: K = J M^-1 J^T for the passes that follow. With
+ * `errors`, each joint node's right-hand side is its rows' position error
+ * there as well, as load (world, 1) would make it from the same rows. */
+static void refactor (carom_world *world, int errors)
 {
   joint_tree *t = &world->joint_tree;
   joints *js = &world->joints;
@@ -526,6 +528,13 @@ static void refactor (carom_world *world)
           /* (rows past its count are never written: 0 since its creation) */
           joint_rows (j, &sb[j->a < 0 ? world->slot_count : j->a], &sb[j->b], j->ja, j->jb, c);
           n->rows = joint_row_count (j);
+          if (errors)
+            {
+              double reach = joint_reach (world, j);
+              n->x[0] = n->x[1] = n->x[2] = 0.0;
+              for (r = 0; r < n->rows; ++r)
+                n->x[r] = clamp_error (c[r], j->ja + 3 * r, j->jb + 3 * r, reach);
+            }
           if (n->parent >= 0)
             memcpy (n->h, joint_block (j, t->nodes[n->parent].body), sizeof n->h);
         }
@@ -533,6 +542,7 @@ static void refactor (carom_world *world)
         {
           const solver_body *b = &sb[n->body];
           n->rows = 3;
+          n->x[0] = n->x[1] = n->x[2] = 0.0;
           n->d[0] = n->d[4] = 1.0 / b->im;
           n->d[8] = 1.0 / b->ii;
           if (n->parent >= 0)
@@ -609,7 +619,7 @@ void joint_tree_solve (carom_world *world)
   if (t->node_count == 0)
     return;
   if (!t->factored)
-    refactor (world);
+    refactor (world, 0);
   load (world, 0);
   substitute (t);
   /* x = -K^-1 J v: the impulses that zero every row's velocity error at
@@ -671,13 +681,14 @@ static void take (solver_body *b, const moved *m)
   b->v = m->v, b->dp = m->dp, b->w = m->w, b->da = m->da, b->dq = m->dq;
 }
 
-static void project (carom_world *world, const step_context *ctx)
+static void project (carom_world *world, const step_context *ctx, int loaded)
 {
   joint_tree *t = &world->joint_tree;
   joints *js = &world->joints;
   solver_body *sb = world->solver_bodies;
   int32_t i;
-  load (world, 1);
+  if (!loaded)
+    load (world, 1);
   substitute (t);
   for (i = 0; i < t->node_count; ++i)
     {
@@ -766,13 +777,14 @@ void joint_tree_project (carom_world *world, const step_context *ctx)
   if (t->node_count == 0)
     return;
   if (!t->factored)
-    refactor (world);
-  project (world, ctx);
+    refactor (world, 0);
+  project (world, ctx, 0);
   t->converged = 0;
   for (pass = 0; pass < JOINT_NEWTON_PASSES && !(t->converged = pass > 0 && projected (world)); ++pass)
     {
-      refactor (world);
-      project (world, ctx);
+      /* the rows where the bodies are now give the errors too */
+      refactor (world, 1);
+      project (world, ctx, 1);
     }
 }
 
