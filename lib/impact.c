@@ -51,11 +51,16 @@
 /* One pair of bodies meeting through several contacts at once (pieces of a
  * concave or compound body) takes one impact on all of them
  * (impact_group_event), of at most this many contacts; its solve passes
- * stop when no impulse changes by more than IMPACT_GROUP_TOLERANCE of the
- * largest, at most IMPACT_GROUP_PASSES. */
+ * stop when every point is within IMPACT_GROUP_TOLERANCE of the fastest
+ * approach of its target (at it with an impulse, at least at it without),
+ * at most IMPACT_GROUP_PASSES. Points that say the same of the bodies (four
+ * corners of one face on another) leave the passes no single answer to
+ * settle on, and they converge slowly: in the elastic gas with the
+ * vertex-edge method a few in a thousand such impacts take 1000 to 4000
+ * passes, and stopped at 1000 they left the gas 1e-11 of its energy off. */
 #define IMPACT_GROUP_MAX 8
 #define IMPACT_GROUP_TOLERANCE 1e-13
-#define IMPACT_GROUP_PASSES 1000
+#define IMPACT_GROUP_PASSES 10000
 /* Times a step looks for the new pairs of bodies its impacts set moving
  * (contacts_after_impacts), each after the impacts found so far. */
 #define AFTER_IMPACT_PASSES 4
@@ -602,7 +607,7 @@ typedef struct group_point {
  * leaving is pushed back to minus its speed at most (the time reverse of a
  * bounce, so no impulse adds energy): the impulses lambda >= 0 of that
  * complementarity problem, found by projected Gauss-Seidel passes on the
- * fixed targets until they settle. Taken one contact after the other (the
+ * fixed targets until every point meets its target. Taken one contact after the other (the
  * sequential model), an H landing flat on its two feet would leave turning,
  * the first foot's bounce tipping it onto the second. The same for one
  * contact of more than two points (count 1: the vertex-edge method's
@@ -613,7 +618,7 @@ static int impact_group_event (contact *const *group, int32_t count, solver_body
 {
   group_point g[IMPACT_GROUP_MAX * MANIFOLD_MAX_POINTS];
   vec2 va = a->v, vb = b->v;
-  double wa = a->w, wb = b->w, largest;
+  double wa = a->w, wb = b->w, scale = 0.0;
   int32_t i, j, m, n = 0, pass, closing = 0;
   for (m = 0; m < count; ++m)
     for (j = 0; j < group[m]->count; ++j)
@@ -627,6 +632,7 @@ static int impact_group_event (contact *const *group, int32_t count, solver_body
         g[n].fall = relative_fall (a, b, p->normal, ctx) * t;
         speed = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + g[n].fall;
         g[n].target = speed < 0.0 ? -k->restitution * speed : -speed;
+        scale = fabs (speed) > scale ? fabs (speed) : scale;
         closing |= speed < -(tol + impact_threshold (ctx, p->normal));
         ++n;
       }
@@ -634,21 +640,26 @@ static int impact_group_event (contact *const *group, int32_t count, solver_body
     return 0;
   for (pass = 0; pass < IMPACT_GROUP_PASSES; ++pass)
     {
-      double change = 0.0;
-      largest = 0.0;
+      double residual = 0.0;
       for (i = 0; i < n; ++i)
         {
           contact_point *p = g[i].p;
           double vn = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + g[i].fall;
-          double next = g[i].lambda + (g[i].target - vn) * p->normal_mass, d;
+          double next = g[i].lambda + (g[i].target - vn) * p->normal_mass;
           next = next > 0.0 ? next : 0.0;
-          d = next - g[i].lambda;
+          contact_push (a, b, p->normal, p->rn_a, p->rn_b, next - g[i].lambda);
           g[i].lambda = next;
-          contact_push (a, b, p->normal, p->rn_a, p->rn_b, d);
-          change = fabs (d) > change ? fabs (d) : change;
-          largest = next > largest ? next : largest;
         }
-      if (!(change > IMPACT_GROUP_TOLERANCE * largest))
+      /* how far the points are from their targets now: below one with an
+       * impulse, short of it without */
+      for (i = 0; i < n; ++i)
+        {
+          contact_point *p = g[i].p;
+          double off = contact_speed (a, b, p->normal, p->rn_a, p->rn_b) + g[i].fall - g[i].target;
+          off = g[i].lambda > 0.0 ? fabs (off) : -off;
+          residual = off > residual ? off : residual;
+        }
+      if (!(residual > IMPACT_GROUP_TOLERANCE * scale))
         break;
     }
   for (m = 0; m < count; ++m)
