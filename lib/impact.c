@@ -100,10 +100,8 @@ static int all_apart (const contact *k, const step_context *ctx)
  * spinning body swings in a corner that is none of the detected points,
  * and the points' own estimate (their speed at the arms of the detection)
  * misses it (the elastic gas: 5 cm deep). Its pieces are polygons' convex
- * pieces or circles, or the vertex-edge method's convex whole outlines (the
- * time of impact follows their separation, contact_separation_at, each such
- * outline as its single piece: toi_searchable). The first part, all_apart,
- * is its caller's. */
+ * pieces or circles, or the vertex-edge method's whole outlines (toi.h).
+ * The first part, all_apart, is its caller's. */
 static int impact_within_step (const carom_world *world, const contact *k, const solver_body *a,
                                const solver_body *b, const step_context *ctx)
 {
@@ -113,8 +111,6 @@ static int impact_within_step (const carom_world *world, const contact *k, const
   vec2 v;
   int32_t j;
   ba = &world->bodies[k->a], bb = &world->bodies[k->b];
-  if (k->piece_a < 0 && k->piece_b < 0 && ba->shape.kind == CAROM_SHAPE_POLYGON && !toi_searchable (world, k))
-    return 0; /* the vertex-edge method's concave whole outlines */
   /* how far the bodies' turning can carry their surfaces in the step */
   turn = (fabs (a->w) * ba->shape.bound_radius + fabs (b->w) * bb->shape.bound_radius) * ctx->dt;
   v = v2_sub (b->v, a->v);
@@ -751,12 +747,6 @@ static double impact_again (carom_world *world, contact *k, const step_context *
    * the step) */
   if (k->restitution == 0.0 || k->count == 0 || k->reimpacts >= REIMPACT_MAX)
     return TOI_UNKNOWN;
-  /* the vertex-edge method's concave whole outlines have no time of impact
-   * (toi_searchable): taken as apart, no impulse for the rest of the step
-   * (the sub-steps, at the bodies' final velocities, took 2% of an elastic
-   * gas's energy) */
-  if (k->piece_a < 0 && k->piece_b < 0 && ba->shape.kind == CAROM_SHAPE_POLYGON && !toi_searchable (world, k))
-    return TOI_APART;
   /* struck at the start while overlapping: still overlapping after it */
   for (j = 0; j < k->count && struck && t == 0.0; ++j)
     if (k->points[j].depth > 0.0)
@@ -910,8 +900,9 @@ static int impacts_run (carom_world *world, const step_context *ctx, int may_sto
           ++tried;
           impact_keep (world, k);
           members = impact_group (world, index, ctx, t, group);
-          if (!(members > 1 || k->count > 2 ? impact_group_event (group, members, &sb[k->a], &sb[k->b], shifts, ctx, t, tol)
-                            : impact_event (k, &sb[k->a], &sb[k->b], shifts, ctx, t, tol)))
+          if (!(members > 1 || k->count > 2
+                    ? impact_group_event (group, members, &sb[k->a], &sb[k->b], shifts, ctx, t, tol)
+                    : impact_event (k, &sb[k->a], &sb[k->b], shifts, ctx, t, tol)))
             continue;
           ++c->impacts;
           for (m = 0; m < members; ++m)

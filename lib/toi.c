@@ -256,10 +256,35 @@ static int whole_outlines (const body *A, const body *B, const contact *k)
          && B->shape.kind == CAROM_SHAPE_POLYGON;
 }
 
-int toi_searchable (const carom_world *world, const contact *k)
+/* Whole outlines of which one is concave (the vertex-edge method's): the
+ * union of their convex pieces (shape.pieces), which first touch where the
+ * first pair of pieces does. Each pair is searched as any pair of pieces,
+ * no further than the earliest touch found so far; a pair that touches
+ * already (or whose search ran out) leaves the whole unknown, as it would
+ * leave itself. */
+static double outlines_first_touch (const carom_world *world, const contact *k, const solver_body *a,
+                                    const solver_body *b, const step_context *ctx, double t_from, double t_max,
+                                    const impact_shift *shifts, vec2 *axis)
 {
   const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
-  return !whole_outlines (A, B, k) || (A->shape.convex && B->shape.convex);
+  contact pieces = *k;
+  double first = TOI_APART;
+  vec2 best = v2 (0.0, 0.0), n;
+  int32_t i, j;
+  for (i = 0; i < A->shape.piece_count; ++i)
+    for (j = 0; j < B->shape.piece_count; ++j)
+      {
+        double t;
+        pieces.piece_a = i, pieces.piece_b = j;
+        t = toi_first_touch (world, &pieces, a, b, ctx, t_from, first > t_from ? first : t_max, shifts, &n);
+        if (t == TOI_UNKNOWN)
+          return TOI_UNKNOWN;
+        if (t >= 0.0 && (first < 0.0 || t < first))
+          first = t, best = n;
+      }
+  if (first >= 0.0 && axis)
+    *axis = best;
+  return first;
 }
 
 double toi_first_touch (const carom_world *world, const contact *k, const solver_body *a, const solver_body *b,
@@ -282,10 +307,10 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
                         : TOI_MAX_ADVANCES;
   if (whole_outlines (A, B, k))
     {
-      /* convex whole outlines (toi_searchable): each is its single piece,
-       * the same surface, whose separation and faces the search follows */
+      /* convex whole outlines: each is its single piece, the same surface,
+       * whose separation and faces the search follows */
       if (!A->shape.convex || !B->shape.convex)
-        return TOI_UNKNOWN;
+        return outlines_first_touch (world, k, a, b, ctx, t_from, t_max, shifts, axis);
       pieces = *k;
       pieces.piece_a = pieces.piece_b = 0;
       k = &pieces;

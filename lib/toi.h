@@ -19,9 +19,9 @@ struct carom_world;
 xform toi_pose (const struct carom_world *world, int32_t i, const solver_body *sb, const step_context *ctx, double t,
                 const impact_shift *shift);
 
-/* The first time in (t_from, t_max] at which contact k's pieces (or its
- * convex whole outlines, toi_searchable) touch in free flight (their
- * separation, contact_separation_at, falls to 0), the bodies shifted by
+/* The first time in (t_from, t_max] at which contact k's pieces touch in
+ * free flight (their separation, contact_separation_at, falls to 0), the
+ * bodies shifted by
  * shifts[slot] when shifts is not NULL; TOI_APART when
  * they stay apart until t_max; TOI_UNKNOWN when they already touch at
  * t_from, or the advancement ran out of trials. Conservative advancement
@@ -30,7 +30,11 @@ xform toi_pose (const struct carom_world *world, int32_t i, const solver_body *s
  * (when not NULL) is the axis that separated the pieces at the last trial
  * before it that found them clearly apart (contact_separation_at): the face
  * they closed on, where at the touch two faces may both be at 0 (corner to
- * corner). */
+ * corner). The vertex-edge method's whole outlines (piece_a = piece_b =
+ * -1): a convex one is its single piece, whose separation the search
+ * follows; a concave one is the union of its convex pieces, each pair
+ * searched, the earliest touch theirs. The points of the touch still come
+ * from the world's narrow phase (contact_collide_at). */
 /* How long from now two polygon pieces cannot touch in free flight, judged
  * on edge `edge` of the reference piece `ref` (its body at xr, moving at
  * vr, spinning at wr) turning with its body: the first time a vertex of
@@ -40,15 +44,6 @@ xform toi_pose (const struct carom_world *world, int32_t i, const solver_body *s
  * has the bound. */
 double toi_face_clear (const convex_piece *ref, int32_t edge, xform xr, vec2 vr, double wr, const convex_piece *inc,
                        xform xi, vec2 vi, double wi, double dg, double span);
-
-/* Whether contact k's pieces have a time of impact: any pair of convex
- * pieces or circles, and the vertex-edge method's whole outlines (piece_a =
- * piece_b = -1) when both are convex, each then its single piece, whose
- * separation the search follows (the points of the touch still come from
- * the world's narrow phase, contact_collide_at). A concave outline has none:
- * it is several convex pieces, the search follows one pair's separation and
- * faces, and the outline's one contact stands for every pair at once. */
-int toi_searchable (const struct carom_world *world, const contact *k);
 
 /* Touching: a separation below this fraction of the pair's slop (near the
  * rounding of the coordinates). */
