@@ -495,7 +495,8 @@ static void impact_friction (contact *k, solver_body *a, solver_body *b, const s
  * there faster than `tol` beyond its impact_threshold: each point's normal
  * speed then (the bodies' velocities now, plus what gravity adds until t)
  * leaves at minus e times itself; eq. 3.23 for one point, both at once (the
- * 2x2 problem) for two (more than two: impact_group_event). Its impulses count towards the step's totals, and
+ * 2x2 problem) for two (more than two: impact_group_event). Its impulses
+ * count towards the step's totals, and
  * each body's velocity change times t towards its shift (impact_shift),
  * the move that puts it where an impulse at t leaves it
  * (contact_time_of_impact); the bounce is an event of its step and is not
@@ -603,12 +604,13 @@ typedef struct group_point {
  * leaving is pushed back to minus its speed at most (the time reverse of a
  * bounce, so no impulse adds energy): the impulses lambda >= 0 of that
  * complementarity problem, found by projected Gauss-Seidel passes on the
- * fixed targets until every point meets its target. Taken one contact after the other (the
- * sequential model), an H landing flat on its two feet would leave turning,
- * the first foot's bounce tipping it onto the second. The same for one
- * contact of more than two points (count 1: the vertex-edge method's
- * concave outline, both feet in one contact). Otherwise as impact_event:
- * friction, the totals, the shifts. Returns whether it acted. */
+ * fixed targets until every point meets its target. Taken one contact
+ * after the other (the sequential model), an H landing flat on its two
+ * feet would leave turning, the first foot's bounce tipping it onto the
+ * second. The same for one contact of more than two points (count 1: the
+ * vertex-edge method's concave outline, both feet in one contact).
+ * Otherwise as impact_event: friction, the totals, the shifts. Returns
+ * whether it acted. */
 static int impact_group_event (contact *const *group, int32_t count, solver_body *a, solver_body *b,
                                impact_shift *shifts, const step_context *ctx, double t, double tol)
 {
