@@ -55,9 +55,12 @@
  * approach of its target (at it with an impulse, at least at it without),
  * at most IMPACT_GROUP_PASSES. Points that say the same of the bodies (four
  * corners of one face on another) leave the passes no single answer to
- * settle on, and they converge slowly: in the elastic gas with the
- * vertex-edge method a few in a thousand such impacts take 1000 to 4000
- * passes, and stopped at 1000 they left the gas 1e-11 of its energy off. */
+ * settle on, and they converge slowly: in the accuracy map's elastic gas
+ * with the vertex-edge method most such impacts take one pass and a few
+ * take hundreds or thousands; stopped after 1000 (when the impulses
+ * changed by less than 1e-13 of the largest) they left that gas 1.1e-11
+ * of its energy off (build/accuracy/accuracy knobs=narrow_phase
+ * measures=gas), 6.7e-15 stopped on the targets. */
 #define IMPACT_GROUP_MAX 8
 #define IMPACT_GROUP_TOLERANCE 1e-13
 #define IMPACT_GROUP_PASSES 10000
