@@ -64,7 +64,9 @@ typedef struct contact {
   double restitution, friction;
   int32_t block;              /* two points solved as one 2x2 problem */
   int32_t fine;               /* its bodies fall more than the slop in a
-                                 sub-step: solved until converged */
+                                 step: the solve passes it takes in a
+                                 sub-step at most (contact_fine_passes),
+                                 else 0 */
   int32_t batched;            /* solved in a batch this step (contact_batch.c) */
   int32_t cold;               /* begins resting this step: fresh, near,
                                  neither closing nor leaving fast
@@ -123,6 +125,9 @@ typedef struct contacts {
   const int32_t *rest;   /* this step's contacts the batches leave to the
                             one-at-a-time passes (contact_batch_prepare) */
   int32_t rest_count;
+  const int32_t *fine_rest; /* those of `rest` that are fine, in its order */
+  int32_t fine_rest_count;
+  int32_t fine_passes;   /* the most passes a fine one takes (contact.fine) */
   int32_t *sensors;      /* this detection's pairs with a sensor: pairs of
                             slots, the sensor first (events.c tests their
                             overlap at the end of the update) */

@@ -250,6 +250,18 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
   for (i = 0; i < c->count; ++i)
     if (keys[i] < 0)
       keys[c->rest_count++] = i;
+  /* the fine ones among them, in the same order, for the passes that solve
+   * those alone (in the room the packing order took) */
+  c->fine_rest = order;
+  c->fine_rest_count = 0;
+  c->fine_passes = 0;
+  for (i = 0; i < c->rest_count; ++i)
+    {
+      const contact *ct = &c->list[keys[i]];
+      if (ct->fine)
+        order[c->fine_rest_count++] = keys[i];
+      c->fine_passes = ct->fine > c->fine_passes ? ct->fine : c->fine_passes;
+    }
 }
 
 void contact_batch_store (carom_world *world)

@@ -162,9 +162,9 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
 {
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
-  /* a body falls 0.5 g h^2 in a sub-step with nothing to hold it: more than
-   * the slop, and one pass cannot keep it resting */
-  const double fall = 0.5 * ctx->accel * ctx->h * ctx->h;
+  /* how far a body falls in the step with nothing to hold it
+   * (contact_fine_passes) */
+  const double fall = 0.5 * ctx->accel * ctx->dt * ctx->dt;
   const double dt = ctx->dt, threshold = ctx->restitution_threshold;
   int32_t i, j, bouncy = 0, fine = 0, cold = 0;
   for (i = first; i < c->count; ++i)
@@ -190,8 +190,8 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
       k->event_round = -1;
       k->touch_at = -1.0;
       bouncy += k->restitution > 0.0;
-      k->fine = fall > k->slop;
-      fine += k->fine;
+      k->fine = contact_fine_passes (fall, k->slop);
+      fine += k->fine > 0;
       for (j = 0; j < count; ++j)
         {
           contact_point *p = &points[j];
@@ -408,18 +408,19 @@ static int apart (const contact *k, const double *bias)
   return 1;
 }
 
-double contact_solve (carom_world *world, const step_context *ctx, int32_t kicks, double remaining, int only_fine)
+double contact_solve (carom_world *world, const step_context *ctx, int32_t kicks, double remaining, int32_t pass)
 {
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
+  const int32_t *ids = pass > 0 ? c->fine_rest : c->rest;
+  int32_t i, j, n = pass > 0 ? c->fine_rest_count : c->rest_count;
   double most = 0.0;
-  int32_t i, j;
-  for (i = 0; i < c->rest_count; ++i)
+  for (i = 0; i < n; ++i)
     {
-      contact *k = &c->list[c->rest[i]];
+      contact *k = &c->list[ids[i]];
       solver_body *a = &sb[k->a], *b = &sb[k->b];
       double bias[MANIFOLD_MAX_POINTS], change = 0.0;
-      if (only_fine && !k->fine)
+      if (k->fine <= pass && pass > 0)
         continue;
       for (j = 0; j < k->count; ++j)
         bias[j] = point_bias (&k->points[j], a, b, ctx);

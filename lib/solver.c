@@ -34,15 +34,6 @@
 #include <emmintrin.h>
 #endif
 
-/* Small bodies (contact.fine: a sub-step's fall is more than their slop):
- * their contacts' solve pass is repeated, past `iterations`, while some
- * point's normal speed still changed by more than ctx->converged in the last
- * pass, up to this many passes in all. Their stack, before it has impulses to
- * warm start from (just built, or just landed), then carries its weight down
- * within the sub-step instead of sinking for several steps; bodies large
- * enough for one pass cost nothing more. */
-#define SOLVE_MAX_ITERATIONS 32
-
 /* The solver's compact copy of what it reads and writes per body (128 bytes
  * instead of the whole body), gathered before the sub-steps and written back
  * after: the passes touch each body many times. */
@@ -310,10 +301,9 @@ void solver_step (carom_world *world, const step_context *ctx)
         }
       if (contacts)
         {
-          if (world->contacts.fine_count > 0)
-            for (; it < SOLVE_MAX_ITERATIONS; ++it)
-              if (!(contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, 1) > ctx->converged))
-                break;
+          for (; it < world->contacts.fine_passes; ++it)
+            if (!(contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, it) > ctx->converged))
+              break;
           contact_shock (world, ctx, k);
           for (it = 0; it < ctx->iterations; ++it)
             {
