@@ -114,7 +114,6 @@ typedef struct contacts {
   int32_t table_built;
   int32_t cursor;        /* the old contact after the last one matched */
   int32_t point_count;
-  int32_t fine_count;    /* contacts marked fine this step */
   int32_t cold_count;    /* contacts marked cold this step */
   int32_t bouncy_count;  /* contacts with restitution this step (contact_prepare) */
   int32_t bouncy_found;  /* contacts with restitution the detection made */

@@ -152,7 +152,6 @@ static int begins_resting (const contact *k, const step_context *ctx)
 void contact_prepare (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
-  c->fine_count = 0;
   c->cold_count = 0;
   c->bouncy_count = 0;
   contact_prepare_from (world, ctx, 0);
@@ -166,7 +165,7 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
    * (contact_fine_passes) */
   const double fall = 0.5 * ctx->accel * ctx->dt * ctx->dt;
   const double dt = ctx->dt, threshold = ctx->restitution_threshold;
-  int32_t i, j, bouncy = 0, fine = 0, cold = 0;
+  int32_t i, j, bouncy = 0, cold = 0;
   for (i = first; i < c->count; ++i)
     {
       contact *k = &c->list[i];
@@ -191,7 +190,6 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
       k->touch_at = -1.0;
       bouncy += k->restitution > 0.0;
       k->fine = contact_fine_passes (fall, k->slop);
-      fine += k->fine > 0;
       for (j = 0; j < count; ++j)
         {
           contact_point *p = &points[j];
@@ -232,7 +230,6 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
       cold += k->cold;
     }
   c->bouncy_count += bouncy;
-  c->fine_count += fine;
   c->cold_count += cold;
 }
 

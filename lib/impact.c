@@ -1065,7 +1065,7 @@ void contact_impacts (carom_world *world, const step_context *ctx)
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
   impact_saved *saved = world->impact_saved;
-  int32_t count = c->count, fine = c->fine_count, cold = c->cold_count;
+  int32_t count = c->count, cold = c->cold_count;
   int32_t bouncy = c->bouncy_count, i, replays;
   c->impacts = 0;
   if (c->bouncy_count == 0)
@@ -1092,11 +1092,11 @@ void contact_impacts (carom_world *world, const step_context *ctx)
           k->pending = k->queued = k->reimpacts = 0;
           k->event_round = -1;
         }
-      c->fine_count = fine, c->cold_count = cold, c->bouncy_count = bouncy;
+      c->cold_count = cold, c->bouncy_count = bouncy;
       world->level_count = -1;
       contact_prepare_from (world, ctx, first);
       count = c->count;
-      fine = c->fine_count, cold = c->cold_count, bouncy = c->bouncy_count;
+      cold = c->cold_count, bouncy = c->bouncy_count;
     }
 }
 
