@@ -301,9 +301,14 @@ void solver_step (carom_world *world, const step_context *ctx)
         }
       if (contacts)
         {
+          double first = 0.0;
           for (; it < world->contacts.fine_passes; ++it)
-            if (!(contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, it) > ctx->converged))
-              break;
+            {
+              double change = contact_solve (world, ctx, k + 1, ctx->dt - k * ctx->h, it);
+              first = it == ctx->iterations ? change : first;
+              if (!(change > CONTACT_FINE_CONVERGED * first))
+                break;
+            }
           contact_shock (world, ctx, k);
           for (it = 0; it < ctx->iterations; ++it)
             {

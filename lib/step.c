@@ -7,11 +7,6 @@
  * bounce: a body resting under gravity meets its support at about one
  * step's gravity each step, and must stay resting. */
 #define RESTITUTION_THRESHOLD_STEPS 2.0
-/* The extra passes of small bodies' contacts (solver.c) stop once no normal
- * speed changes by more than this fraction of a sub-step's gravity speed;
- * without gravity there is no weight to carry down, and none are made. */
-#define SOLVE_CONVERGED 0.01
-
 void step_context_init (step_context *ctx, const carom_world *world, double dt)
 {
   ctx->dt = dt;
@@ -30,7 +25,6 @@ void step_context_init (step_context *ctx, const carom_world *world, double dt)
   ctx->damp_w = ctx->damping ? exp (-world->damping_angular * ctx->h) : 1.0;
   ctx->restitution_threshold = RESTITUTION_THRESHOLD_STEPS * ctx->accel * dt;
   ctx->push_rate = world->def.position_correction * ctx->inv_h;
-  ctx->converged = ctx->accel > 0.0 ? SOLVE_CONVERGED * ctx->accel * ctx->h : INFINITY;
   ctx->joint_hold = joint_hold_soft (ctx->h);
   ctx->sensor_reach = 0.0;
   ctx->update = world->updates;

@@ -38,8 +38,6 @@ typedef struct step_context {
    * gravity, where every approach bounces) */
   double restitution_threshold;
   double push_rate;      /* overlap pushed out per unit time: position_correction / h */
-  double converged;      /* a solve pass that changes no normal speed by more
-                            than this ends the sub-step's passes (solver.c) */
   joint_soft joint_hold;  /* how a joint corrects its error in a sub-step's
                             solve (joint_hold_soft) */
   double sensor_reach;   /* how far the fastest body can travel in dt, when
