@@ -174,7 +174,7 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
   /* the contacts the second colouring takes, in list order, in the room
    * `order` has until the counting sort */
   int32_t *apart = order, apart_count = 0;
-  int32_t i, k, n = 0;
+  int32_t i, k, n = 0, fine_count = 0, fine_passes = 0;
   (void) ctx;
   for (i = 0; i <= 4 * CONSTRAINT_COLOURS; ++i)
     end[i] = 0;
@@ -244,24 +244,24 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
     }
   world->batch_count = n;
   /* the rest, in list order, for contact_solver.c's passes (in the room
-   * the keys took, each read before it is written over) */
-  c->rest = keys;
-  c->rest_count = 0;
-  for (i = 0; i < c->count; ++i)
+   * the keys took, each read before it is written over), and the fine ones
+   * among them, in the same order, for the passes that solve those alone
+   * (in the room the packing order took) */
+  for (i = 0, k = 0; i < c->count; ++i)
     if (keys[i] < 0)
-      keys[c->rest_count++] = i;
-  /* the fine ones among them, in the same order, for the passes that solve
-   * those alone (in the room the packing order took) */
+      {
+        int32_t fine = c->list[i].fine;
+        keys[k++] = i;
+        /* by a select: which are fine is not predictable */
+        order[fine_count] = i;
+        fine_count += fine != 0;
+        fine_passes = fine > fine_passes ? fine : fine_passes;
+      }
+  c->rest = keys;
+  c->rest_count = k;
   c->fine_rest = order;
-  c->fine_rest_count = 0;
-  c->fine_passes = 0;
-  for (i = 0; i < c->rest_count; ++i)
-    {
-      const contact *ct = &c->list[keys[i]];
-      if (ct->fine)
-        order[c->fine_rest_count++] = keys[i];
-      c->fine_passes = ct->fine > c->fine_passes ? ct->fine : c->fine_passes;
-    }
+  c->fine_rest_count = fine_count;
+  c->fine_passes = fine_passes;
 }
 
 void contact_batch_store (carom_world *world)
