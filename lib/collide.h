@@ -26,7 +26,15 @@ typedef struct manifold {
    * that face, can lie farther apart than the pieces do); INFINITY where
    * the points' own depths tell it */
   double gap;
+  /* Two polygon pieces (the SAT): their largest separation over both
+   * pieces' edge normals at these poses and the edge it was found on,
+   * bit for bit what polygons_separation_face gives (its `face`: an edge of
+   * a, or -1 - an edge of b); MANIFOLD_NO_FACE from the other tests. */
+  double separation;
+  int32_t separation_face;
 } manifold;
+
+#define MANIFOLD_NO_FACE INT32_MIN
 
 int32_t collide_circles (vec2 ca, double ra, vec2 cb, double rb, double margin, manifold *m);
 

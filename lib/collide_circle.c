@@ -16,6 +16,7 @@ int32_t collide_circles (vec2 ca, double ra, vec2 cb, double rb, double margin, 
   double dist = hypot (d.x, d.y), depth; /* the squared length may underflow */
   m->count = 0;
   m->gap = INFINITY;
+  m->separation_face = MANIFOLD_NO_FACE;
   if (dist > ra + rb + margin)
     return 0;
   /* coincident centres have no direction between them: pick +x, so the
@@ -35,6 +36,7 @@ int32_t collide_polygon_circle (const convex_piece *a, xform xa, vec2 cb, double
   vec2 v1, v2_, normal, surface;
   m->count = 0;
   m->gap = INFINITY;
+  m->separation_face = MANIFOLD_NO_FACE;
   for (i = 0; i < n; ++i)
     {
       double s = v2_dot (a->normals[i], v2_sub (c, a->vertices[i]));

@@ -387,12 +387,17 @@ static int32_t sat_collide (const convex_piece *a, xform xa, const convex_piece 
   clip_vertex seg[2], clip1[2], clip2[2];
   m->count = 0;
   m->gap = INFINITY;
+  m->separation_face = MANIFOLD_NO_FACE;
   sep_a = max_separation (a, xa, b, xb, margin, &edge_a, &face_a, &outer_a);
   if (sep_a > margin)
     return 0;
   sep_b = max_separation (b, xb, a, xa, margin, &edge_b, &face_b, &outer_b);
   if (sep_b > margin)
     return 0;
+  /* neither search stopped at the margin: both are the whole searches
+   * polygons_separation_face makes, and it takes the larger as here */
+  m->separation = sep_a > sep_b ? sep_a : sep_b;
+  m->separation_face = sep_b > sep_a ? -1 - edge_b : edge_a;
   /* the faces a contact may take: none of a seam (seams.h), though the
    * separation test above counts every axis */
   if (outer_a < 0 && outer_b < 0)

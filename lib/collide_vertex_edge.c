@@ -451,6 +451,7 @@ int32_t collide_polygons_vertex_edge_seams (const vec2 *va, int32_t na, uint64_t
     return 0;
   m->count = 0;
   m->gap = INFINITY;
+  m->separation_face = MANIFOLD_NO_FACE;
   if (!va || !vb || na < 3 || nb < 3)
     return 0;
   if (!(margin >= 0.0))

@@ -244,6 +244,7 @@ static int reuse_contact (carom_world *world, int32_t pa, int32_t pb, const pair
   k->computed_at = then;
   k->reused = 1;
   k->gap = move_points (o->points, k->points, o->count, xa, now, turn);
+  k->separation_known = 0;
   return 1;
 }
 
@@ -259,6 +260,9 @@ static void add_manifold (carom_world *world, int32_t pa, int32_t pb, const mani
   k = new_contact (world, pa, pb, pc, old, m->count, m->gap, clear);
   if (!k)
     return;
+  k->separation_known = m->separation_face != MANIFOLD_NO_FACE;
+  k->separation = m->separation;
+  k->separation_face = m->separation_face;
   for (i = 0; i < m->count; ++i)
     {
       contact_point *p = &k->points[i];
@@ -660,6 +664,22 @@ double contact_separation_face_at (const carom_world *world, const contact *k, x
         *axis = m.points[j].normal;
       }
   return -deepest;
+}
+
+int contact_separation_face_detected (const carom_world *world, const contact *k, vec2 *axis, contact_face *face,
+                                      double *separation)
+{
+  const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
+  int32_t edge = k->separation_face;
+  if (!k->separation_known)
+    return 0;
+  /* a SAT contact's pieces are two polygons: a polygon's or a compound's
+   * (body_pieces), as contact_separation_face_at takes them */
+  face->pa = &A->shape.pieces[k->piece_a], face->pb = &B->shape.pieces[k->piece_b];
+  *axis = edge < 0 ? v2_neg (rot2_apply (B->q, face->pb->normals[-1 - edge])) : rot2_apply (A->q, face->pa->normals[edge]);
+  contact_face_side (face, edge);
+  *separation = k->separation;
+  return 1;
 }
 
 double contact_separation_at (const carom_world *world, const contact *k, xform xa, xform xb, vec2 *axis)

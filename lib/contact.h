@@ -95,6 +95,12 @@ typedef struct contact {
   int32_t clear;              /* at detection: its pieces cannot touch
                                  within the step in free flight (contact.c,
                                  clear_of_step) */
+  int32_t separation_known;   /* the SAT measured the pieces at this
+                                 step's poses (not a reused manifold, nor
+                                 another test): its separation and face
+                                 (manifold.separation) follow */
+  int32_t separation_face;
+  double separation;
 } contact;
 
 typedef struct contacts {
@@ -223,6 +229,11 @@ typedef struct contact_face {
 /* contact_separation_at, and the face it was measured on. */
 double contact_separation_face_at (const struct carom_world *world, const contact *k, xform xa, xform xb, vec2 *axis,
                                    contact_face *face);
+/* The same at the bodies' poses of the detection, from what the SAT found
+ * there (contact.separation_known), to the bit: 1, or 0 when it found
+ * nothing (another test, or a reused manifold), and the caller measures. */
+int contact_separation_face_detected (const struct carom_world *world, const contact *k, vec2 *axis,
+                                      contact_face *face, double *separation);
 /* Contact k's convex piece of one body (side 0: A, 1: B), in its body's
  * frame: a circle body's one circle (made in `circle`), a polygon's or a
  * compound's piece; NULL for the vertex-edge method's whole outline. */

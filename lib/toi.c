@@ -83,6 +83,42 @@ static double separation_face (const toi_pair *p, double t, vec2 *axis, contact_
                                      toi_pose (p->world, p->k->b, p->b, p->ctx, t, p->shift_b), axis, face);
 }
 
+#ifdef CAROM_DEBUG_CHECKS
+#include <stdio.h>
+#include <stdlib.h>
+/* The test builds' check of separation_at_start: the detection's measure
+ * is the one the search would make, to the bit. */
+static void check_detected (const toi_pair *p, double s, vec2 axis, const contact_face *face)
+{
+  contact_face f;
+  vec2 n;
+  double measured = separation_face (p, 0.0, &n, &f);
+  if (measured != s || n.x != axis.x || n.y != axis.y || f.ref != face->ref || f.edge != face->edge)
+    {
+      fprintf (stderr, "carom: CAROM_DEBUG_CHECKS: the detection's separation is not the time of impact's at 0\n");
+      abort ();
+    }
+}
+#else
+#define check_detected(p, s, axis, face) ((void) 0)
+#endif
+
+/* separation_face at the start of the step, where the bodies are as the
+ * detection found them (no impact has moved them: no shifts): the SAT's
+ * own measure there when it made one, which the search's first
+ * measure would repeat (most searches end at their first advance, where
+ * that measure was half their cost). */
+static double separation_at_start (const toi_pair *p, vec2 *axis, contact_face *face)
+{
+  double s;
+  if (!p->shift_a && !p->shift_b && contact_separation_face_detected (p->world, p->k, axis, face, &s))
+    {
+      check_detected (p, s, *axis, face);
+      return s;
+    }
+  return separation_face (p, 0.0, axis, face);
+}
+
 /* How long after t two polygon pieces cannot touch, measured on the face
  * `face` of the reference piece (R, the body it belongs to) turning with
  * it, not held fixed in the world: while every vertex of the incident
@@ -269,6 +305,7 @@ static double outlines_first_touch (const carom_world *world, const contact *k, 
   const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
   contact pieces = *k;
   double first = TOI_APART;
+  pieces.separation_known = 0;
   vec2 best = v2 (0.0, 0.0), n;
   int32_t i, j;
   for (i = 0; i < A->shape.piece_count; ++i)
@@ -313,6 +350,7 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
         return outlines_first_touch (world, k, a, b, ctx, t_from, t_max, shifts, axis);
       pieces = *k;
       pieces.piece_a = pieces.piece_b = 0;
+      pieces.separation_known = 0;
       k = &pieces;
     }
   p.world = world, p.k = k, p.a = a, p.b = b, p.ctx = ctx;
@@ -340,7 +378,7 @@ double toi_first_touch (const carom_world *world, const contact *k, const solver
     meet = circles_meet (v2_sub (xb.p, xa.p), vt, reach_a + reach_b + 0.5 * v2_len (g) * span * span, span);
     if (meet < 0.0 || fixed_axis_apart (&p, xa, xb, k->points[0].normal, vt, g, span))
       return TOI_APART;
-    if (t_from == 0.0 && !((s = s0 = separation_face (&p, t, &n, &face)) > p.tol))
+    if (t_from == 0.0 && !((s = s0 = separation_at_start (&p, &n, &face)) > p.tol))
       return TOI_UNKNOWN;
     *axis = n;
     if (meet > 0.0)
