@@ -55,20 +55,35 @@
  * approach of its target (at it with an impulse, at least at it without),
  * or within the rounding of its own speed, IMPACT_GROUP_ROUNDING of the
  * terms that make it up (a slow approach of fast bodies can come no nearer:
- * overlapping concave bodies spinning into each other stalled at 3e-16 of
- * their speeds, 1e-12 of their approach, and took all the passes, 170 ms
- * a step for ten bodies), at most IMPACT_GROUP_PASSES. Points that say the same of the bodies (four
+ * concave bodies created on top of one another and spinning into each
+ * other stalled at 3e-16 of their speeds, 1e-12 of their approach, and
+ * took all the passes: fuzz/corpus/scene/overlapping-concave.scene), at
+ * most IMPACT_GROUP_PASSES. Points that say the same of the bodies (four
  * corners of one face on another) leave the passes no single answer to
  * settle on, and they converge slowly: in the accuracy map's elastic gas
  * with the vertex-edge method most such impacts take one pass and a few
  * take hundreds or thousands; stopped after 1000 (when the impulses
  * changed by less than 1e-13 of the largest) they left that gas 1.1e-11
  * of its energy off (build/accuracy/accuracy knobs=narrow_phase
- * measures=gas), 6.7e-15 stopped on the targets. */
+ * measures=gas), 6.7e-15 stopped on the targets, 1.2e-14 on the targets
+ * or their rounding (both rounding: the gas then takes another of its
+ * chaotic paths). */
 #define IMPACT_GROUP_MAX 8
 #define IMPACT_GROUP_TOLERANCE 1e-13
 #define IMPACT_GROUP_ROUNDING (32.0 * DBL_EPSILON)
 #define IMPACT_GROUP_PASSES 10000
+/* The passes over their points all the groups of one run of the impacts
+ * take at most (a group's passes times its points): past it, each group
+ * takes what is left, and at least one pass. A group whose targets cannot
+ * all be met (bodies created deep inside one another, each of their
+ * pieces closing on the other from opposite sides) takes every pass it is
+ * allowed without converging: `make fuzz` found worlds of two such bodies
+ * (fuzz/corpus/world/e8ed1379... and f551f790...) whose groups took all
+ * 10000 passes, dozens of them a step: 87 s and 2.3 s to replay, 0.86 s
+ * and 0.05 s with this bound (built -O2, without the sanitizers). The
+ * scenes that converge need a small part of it: the vertex-edge gas above
+ * at most 1264 in a run. */
+#define IMPACT_GROUP_WORK 2000000
 /* Times a step looks for the new pairs of bodies its impacts set moving
  * (contacts_after_impacts), each after the impacts found so far. */
 #define AFTER_IMPACT_PASSES 4
@@ -628,12 +643,12 @@ static double speed_terms (const solver_body *a, const solver_body *b, const con
 }
 
 static int impact_group_event (contact *const *group, int32_t count, solver_body *a, solver_body *b,
-                               impact_shift *shifts, const step_context *ctx, double t, double tol)
+                               impact_shift *shifts, const step_context *ctx, double t, double tol, int64_t *work)
 {
   group_point g[IMPACT_GROUP_MAX * MANIFOLD_MAX_POINTS];
   vec2 va = a->v, vb = b->v;
   double wa = a->w, wb = b->w, scale = 0.0;
-  int32_t i, j, m, n = 0, pass, closing = 0;
+  int32_t i, j, m, n = 0, pass, passes, closing = 0;
   for (m = 0; m < count; ++m)
     for (j = 0; j < group[m]->count; ++j)
       {
@@ -652,7 +667,9 @@ static int impact_group_event (contact *const *group, int32_t count, solver_body
       }
   if (!closing)
     return 0;
-  for (pass = 0; pass < IMPACT_GROUP_PASSES; ++pass)
+  passes = *work / n < IMPACT_GROUP_PASSES ? (int32_t) (*work / n) : IMPACT_GROUP_PASSES;
+  passes = passes > 1 ? passes : 1;
+  for (pass = 0; pass < passes; ++pass)
     {
       double residual = 0.0;
       for (i = 0; i < n; ++i)
@@ -676,6 +693,7 @@ static int impact_group_event (contact *const *group, int32_t count, solver_body
       if (!(residual > IMPACT_GROUP_TOLERANCE * scale))
         break;
     }
+  *work -= (int64_t) (pass < passes ? pass + 1 : passes) * n;
   for (m = 0; m < count; ++m)
     {
       contact *k = group[m];
@@ -878,6 +896,7 @@ static int impacts_run (carom_world *world, const step_context *ctx, int may_sto
   int32_t i, j, m, n = 0, head = 0, round = 0, passes = 0, members;
   contact *group[IMPACT_GROUP_MAX];
   double fastest = 0.0, tol;
+  int64_t group_work = IMPACT_GROUP_WORK;
   c->impacts = 0;
   for (i = 0; i <= world->slot_count; ++i)
     shifts[i].p = v2 (0.0, 0.0), shifts[i].a = 0.0, shifts[i].at = 0.0;
@@ -919,7 +938,7 @@ static int impacts_run (carom_world *world, const step_context *ctx, int may_sto
           impact_keep (world, k);
           members = impact_group (world, index, ctx, t, group);
           if (!(members > 1 || k->count > 2
-                    ? impact_group_event (group, members, &sb[k->a], &sb[k->b], shifts, ctx, t, tol)
+                    ? impact_group_event (group, members, &sb[k->a], &sb[k->b], shifts, ctx, t, tol, &group_work)
                     : impact_event (k, &sb[k->a], &sb[k->b], shifts, ctx, t, tol)))
             continue;
           ++c->impacts;
