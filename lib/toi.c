@@ -18,7 +18,9 @@
  * touch and a parting within that stretch, which a grazing corner could
  * make), and then the touch is bracketed and found by regula falsi (the
  * Illinois variant) to a separation of TOI_TOUCH times the pair's slop (near
- * the rounding of the coordinates). */
+ * the rounding of the coordinates). A search from the start of the step
+ * begins from the detection's own measure of the pieces (the SAT's
+ * separation and face at the same poses), which it would only repeat. */
 #include "toi.h"
 
 #include "world.h"
