@@ -617,6 +617,14 @@ typedef struct group_point {
   double lambda;
 } group_point;
 
+/* The size of the terms a group point's distance from its target sums
+ * (contact_speed, its fall and its target): what its rounding scales with. */
+static double speed_terms (const solver_body *a, const solver_body *b, const contact_point *p, const group_point *g)
+{
+  return fabs (a->v.x) + fabs (a->v.y) + fabs (b->v.x) + fabs (b->v.y) + fabs (a->w * p->rn_a) + fabs (b->w * p->rn_b)
+         + fabs (g->fall) + fabs (g->target);
+}
+
 /* The impact at time t of a pair of bodies that meets through the `count`
  * contacts of `group` at once (the first, the one whose impact it is; the
  * others the contacts of its pair of bodies whose pieces are within the
@@ -632,16 +640,9 @@ typedef struct group_point {
  * feet would leave turning, the first foot's bounce tipping it onto the
  * second. The same for one contact of more than two points (count 1: the
  * vertex-edge method's concave outline, both feet in one contact).
- * Otherwise as impact_event: friction, the totals, the shifts. Returns
- * whether it acted. */
-/* The size of the terms a group point's distance from its target sums
- * (contact_speed, its fall and its target): what its rounding scales with. */
-static double speed_terms (const solver_body *a, const solver_body *b, const contact_point *p, const group_point *g)
-{
-  return fabs (a->v.x) + fabs (a->v.y) + fabs (b->v.x) + fabs (b->v.y) + fabs (a->w * p->rn_a) + fabs (b->w * p->rn_b)
-         + fabs (g->fall) + fabs (g->target);
-}
-
+ * Otherwise as impact_event: friction, the totals, the shifts. The passes
+ * stop as IMPACT_GROUP_TOLERANCE says, and take from `work`, what the run
+ * of the impacts has left of IMPACT_GROUP_WORK. Returns whether it acted. */
 static int impact_group_event (contact *const *group, int32_t count, solver_body *a, solver_body *b,
                                impact_shift *shifts, const step_context *ctx, double t, double tol, int64_t *work)
 {

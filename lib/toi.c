@@ -307,9 +307,9 @@ static double outlines_first_touch (const carom_world *world, const contact *k, 
   const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
   contact pieces = *k;
   double first = TOI_APART;
-  pieces.separation_known = 0;
   vec2 best = v2 (0.0, 0.0), n;
   int32_t i, j;
+  pieces.separation_known = 0;
   for (i = 0; i < A->shape.piece_count; ++i)
     for (j = 0; j < B->shape.piece_count; ++j)
       {
