@@ -167,14 +167,26 @@ double sat_max_separation (const convex_piece *p, xform xp, const convex_piece *
   return max_separation (p, xp, q, xq, margin, edge, outer, outer_edge);
 }
 
+/* The face of the larger of the two pieces' separations: edge_a, or -1 -
+ * edge_b when b's is larger. */
+static inline int32_t separation_face (double sep_a, int32_t edge_a, double sep_b, int32_t edge_b)
+{
+  return sep_b > sep_a ? -1 - edge_b : edge_a;
+}
+
+vec2 polygons_face_axis (const convex_piece *a, xform xa, const convex_piece *b, xform xb, int32_t face)
+{
+  return face < 0 ? v2_neg (rot2_apply (xb.q, b->normals[-1 - face])) : rot2_apply (xa.q, a->normals[face]);
+}
+
 double polygons_separation_face (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis,
                                  int32_t *face)
 {
   int32_t edge_a, edge_b, outer_edge;
   double outer, sa = sat_max_separation (a, xa, b, xb, INFINITY, &edge_a, &outer, &outer_edge);
   double sb = sat_max_separation (b, xb, a, xa, INFINITY, &edge_b, &outer, &outer_edge);
-  *axis = sb > sa ? v2_neg (rot2_apply (xb.q, b->normals[edge_b])) : rot2_apply (xa.q, a->normals[edge_a]);
-  *face = sb > sa ? -1 - edge_b : edge_a;
+  *face = separation_face (sa, edge_a, sb, edge_b);
+  *axis = polygons_face_axis (a, xa, b, xb, *face);
   return sa > sb ? sa : sb;
 }
 
@@ -332,7 +344,7 @@ static int32_t corner_contact (const convex_piece *a, xform xa, const convex_pie
 static vec2 separating_axis (const convex_piece *a, xform xa, int32_t edge_a, double sep_a, const convex_piece *b,
                              xform xb, int32_t edge_b, double sep_b)
 {
-  return sep_b > sep_a ? v2_neg (rot2_apply (xb.q, b->normals[edge_b])) : rot2_apply (xa.q, a->normals[edge_a]);
+  return polygons_face_axis (a, xa, b, xb, separation_face (sep_a, edge_a, sep_b, edge_b));
 }
 
 /* The axis of a corner contact: `toward` when given
@@ -397,7 +409,7 @@ static int32_t sat_collide (const convex_piece *a, xform xa, const convex_piece 
   /* neither search stopped at the margin: both are the whole searches
    * polygons_separation_face makes, and it takes the larger as here */
   m->separation = sep_a > sep_b ? sep_a : sep_b;
-  m->separation_face = sep_b > sep_a ? -1 - edge_b : edge_a;
+  m->separation_face = separation_face (sep_a, edge_a, sep_b, edge_b);
   /* the faces a contact may take: none of a seam (seams.h), though the
    * separation test above counts every axis */
   if (outer_a < 0 && outer_b < 0)

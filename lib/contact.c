@@ -670,14 +670,16 @@ int contact_separation_face_detected (const carom_world *world, const contact *k
                                       double *separation)
 {
   const body *A = &world->bodies[k->a], *B = &world->bodies[k->b];
-  int32_t edge = k->separation_face;
+  xform xa, xb;
   if (!k->separation_known)
     return 0;
   /* a SAT contact's pieces are two polygons: a polygon's or a compound's
    * (body_pieces), as contact_separation_face_at takes them */
   face->pa = &A->shape.pieces[k->piece_a], face->pb = &B->shape.pieces[k->piece_b];
-  *axis = edge < 0 ? v2_neg (rot2_apply (B->q, face->pb->normals[-1 - edge])) : rot2_apply (A->q, face->pa->normals[edge]);
-  contact_face_side (face, edge);
+  xa.p = A->p, xa.q = A->q;
+  xb.p = B->p, xb.q = B->q;
+  *axis = polygons_face_axis (face->pa, xa, face->pb, xb, k->separation_face);
+  contact_face_side (face, k->separation_face);
   *separation = k->separation;
   return 1;
 }
