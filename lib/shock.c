@@ -126,7 +126,9 @@ static void mark_loaded (carom_world *world, const int32_t *order, int32_t count
 /* What the pass reads of a contact it may hold, copied once per step in
  * level order (contact_shock_prepare), so the passes stream through it:
  * which body is the upper one, and its share of the point's effective mass
- * with the lower body held still. The impulse raises vn: +x n on b, or
+ * with the lower body held still. A row's points follow those of the row
+ * before it in world.shock_points: rows of one or two points (nearly all)
+ * take no room for the four a contact may have. The impulse raises vn: +x n on b, or
  * -x n on a; its sign is folded into im_up and ang (x times -1 is exact,
  * so the upper body moves by the same bits either way). */
 typedef struct shock_point {
@@ -152,7 +154,7 @@ typedef struct shock_row {
                           `moves`), -1 before the first */
   double im_up;        /* up->im, negated when the upper body is a */
   double k11, k12, k22; /* the 2x2 matrix with the lower body held (block) */
-  shock_point p[MANIFOLD_MAX_POINTS];
+  shock_point *p;       /* its `count` points */
 } shock_row;
 
 /* The rows of the contacts in `order` where the upper body rests on the
@@ -166,6 +168,7 @@ static int32_t make_rows (carom_world *world, const step_context *ctx, const int
   solver_body *sb = world->solver_bodies;
   const int32_t *level = world->solver_scratch;
   shock_row *rows = world->shock_rows;
+  shock_point *points = world->shock_points;
   int32_t i, j, n = 0;
   for (i = 0; i < count; ++i)
     {
@@ -181,6 +184,8 @@ static int32_t make_rows (carom_world *world, const step_context *ctx, const int
       r->count = k->count;
       r->kind = k->block ? SHOCK_FACE : k->count;
       r->gap_at = -1;
+      r->p = points;
+      points += k->count;
       for (j = 0; j < k->count; ++j)
         {
           const contact_point *p = &k->points[j];
@@ -326,15 +331,20 @@ static void shock_pass (carom_world *world, const step_context *ctx, double tol,
 
 int contact_shock_reserve (carom_world *world)
 {
+  /* solver_reserve's room */
   return mem_reserve (&world->allocator, (void **) &world->shock_rows, &world->shock_cap,
-                      world->contacts.room_count, sizeof (shock_row)); /* solver_reserve's */
+                      world->contacts.room_count, sizeof (shock_row))
+         && mem_reserve (&world->allocator, (void **) &world->shock_points, &world->shock_point_cap,
+                         world->contacts.room_points, sizeof (shock_point));
 }
 
 void contact_shock_destroy (carom_world *world)
 {
   mem_free (&world->allocator, world->shock_rows, (size_t) world->shock_cap * sizeof (shock_row));
+  mem_free (&world->allocator, world->shock_points, (size_t) world->shock_point_cap * sizeof (shock_point));
   world->shock_rows = NULL;
-  world->shock_cap = 0;
+  world->shock_points = NULL;
+  world->shock_cap = world->shock_point_cap = 0;
 }
 
 /* What each body rests on, in `count` (one per slot): a column's link

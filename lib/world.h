@@ -41,6 +41,8 @@ struct carom_world {
   int32_t shock_count;               /* contacts it may hold this step */
   struct shock_row *shock_rows;      /* and what it reads of them (shock.c) */
   int32_t shock_cap;
+  struct shock_point *shock_points;  /* the rows' points, in row order */
+  int32_t shock_point_cap;
   int32_t *restitution_list;         /* the struck contacts of a step */
   int32_t restitution_cap;
   struct impact_shift *impact_shifts; /* per slot, and the contacts an
