@@ -92,10 +92,13 @@ static void pack_empty_lane (contact_batch *c, int lane, int32_t inert, int poin
   c->contact[lane] = -1;
   c->im_a[lane] = c->ii_a[lane] = c->im_b[lane] = c->ii_b[lane] = 0.0;
   c->friction[lane] = c->slop[lane] = c->max_push[lane] = 0.0;
-  c->k11[lane] = c->k12[lane] = c->k22[lane] = c->pair[lane] = 0.0;
-  c->i11[lane] = c->i12[lane] = c->i22[lane] = c->block[lane] = 0.0;
+  if (points == 2)
+    {
+      c->two.k11[lane] = c->two.k12[lane] = c->two.k22[lane] = c->two.pair[lane] = 0.0;
+      c->two.i11[lane] = c->two.i12[lane] = c->two.i22[lane] = c->two.block[lane] = 0.0;
+    }
   for (j = 0; j < points; ++j)
-    pack_point_empty (&c->p[j], lane);
+    pack_point_empty (BATCH_POINT (c, j), lane);
 }
 
 /* Lane `lane` of batch c: contact k (index `index`). Every field of the
@@ -115,31 +118,33 @@ static void pack_lane (contact_batch *restrict c, int lane, const contact *restr
   c->friction[lane] = k->friction;
   c->slop[lane] = k->slop;
   c->max_push[lane] = k->max_push;
+  pack_point (&c->p0, lane, &k->points[0]);
+  /* a batch of one-point lanes has no room for the rest */
+  if (points == 1)
+    return;
   if (k->block)
     {
       double det = k->k11 * k->k22 - k->k12 * k->k12;
       /* contact_lcp2's first case, as the inverse of K when it has one */
       int invertible = det > 1e-12 * k->k11 * k->k22;
-      c->k11[lane] = k->k11;
-      c->k12[lane] = k->k12;
-      c->k22[lane] = k->k22;
-      c->pair[lane] = 1.0;
-      c->i11[lane] = invertible ? k->k22 / det : 0.0;
-      c->i12[lane] = invertible ? -k->k12 / det : 0.0;
-      c->i22[lane] = invertible ? k->k11 / det : 0.0;
-      c->block[lane] = invertible ? 1.0 : 0.0;
+      c->two.k11[lane] = k->k11;
+      c->two.k12[lane] = k->k12;
+      c->two.k22[lane] = k->k22;
+      c->two.pair[lane] = 1.0;
+      c->two.i11[lane] = invertible ? k->k22 / det : 0.0;
+      c->two.i12[lane] = invertible ? -k->k12 / det : 0.0;
+      c->two.i22[lane] = invertible ? k->k11 / det : 0.0;
+      c->two.block[lane] = invertible ? 1.0 : 0.0;
     }
   else
     {
-      c->k11[lane] = c->k12[lane] = c->k22[lane] = c->pair[lane] = 0.0;
-      c->i11[lane] = c->i12[lane] = c->i22[lane] = c->block[lane] = 0.0;
+      c->two.k11[lane] = c->two.k12[lane] = c->two.k22[lane] = c->two.pair[lane] = 0.0;
+      c->two.i11[lane] = c->two.i12[lane] = c->two.i22[lane] = c->two.block[lane] = 0.0;
     }
-  /* one point or two (batchable) */
-  pack_point (&c->p[0], lane, &k->points[0]);
   if (k->count == 2)
-    pack_point (&c->p[1], lane, &k->points[1]);
-  else if (points == 2)
-    pack_point_empty (&c->p[1], lane);
+    pack_point (&c->two.p1, lane, &k->points[1]);
+  else
+    pack_point_empty (&c->two.p1, lane);
 }
 
 /* The key a contact is packed by: its colour's two-point contacts, then its
@@ -175,6 +180,7 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
    * `order` has until the counting sort */
   int32_t *apart = order, apart_count = 0;
   int32_t i, k, n = 0, fine_count = 0, fine_passes = 0;
+  contact_batch *batch = world->batches;
   (void) ctx;
   for (i = 0; i <= 4 * CONSTRAINT_COLOURS; ++i)
     end[i] = 0;
@@ -228,18 +234,22 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
            * the batch's */
           if (lane == 0)
             points = ct->count;
-          pack_lane (&world->batches[n], lane, ct, order[i], sb, points);
+          pack_lane (batch, lane, ct, order[i], sb, points);
           if (++lane == BATCH_LANES)
             {
-              world->batches[n++].points = points;
+              batch->points = points;
+              batch = batch_next (batch);
+              ++n;
               lane = 0;
             }
         }
       if (lane > 0)
         {
           for (; lane < BATCH_LANES; ++lane)
-            pack_empty_lane (&world->batches[n], lane, world->slot_count, points);
-          world->batches[n++].points = points;
+            pack_empty_lane (batch, lane, world->slot_count, points);
+          batch->points = points;
+          batch = batch_next (batch);
+          ++n;
         }
     }
   world->batch_count = n;
@@ -269,9 +279,9 @@ void contact_batch_store (carom_world *world)
   contacts *c = &world->contacts;
   int32_t i;
   int lane, j;
-  for (i = 0; i < world->batch_count; ++i)
+  const contact_batch *b = world->batches;
+  for (i = 0; i < world->batch_count; ++i, b = batch_next (b))
     {
-      const contact_batch *b = &world->batches[i];
       for (lane = 0; lane < BATCH_LANES; ++lane)
         {
           contact *k;
@@ -280,9 +290,10 @@ void contact_batch_store (carom_world *world)
           k = &c->list[b->contact[lane]];
           for (j = 0; j < k->count; ++j)
             {
-              k->points[j].normal_impulse = b->p[j].normal_impulse[lane];
-              k->points[j].tangent_impulse = b->p[j].tangent_impulse[lane];
-              k->points[j].total_impulse = b->p[j].total[lane];
+              const batch_point *q = BATCH_POINT (b, j);
+              k->points[j].normal_impulse = q->normal_impulse[lane];
+              k->points[j].tangent_impulse = q->tangent_impulse[lane];
+              k->points[j].total_impulse = q->total[lane];
             }
         }
     }

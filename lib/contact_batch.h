@@ -26,6 +26,7 @@
 #ifndef CAROM_CONTACT_BATCH_H
 #define CAROM_CONTACT_BATCH_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "step.h"
@@ -51,19 +52,41 @@ typedef struct batch_point {
   double total[BATCH_LANES]; /* the step's normal impulse (contact_point.total_impulse) */
 } batch_point;
 
-typedef struct contact_batch {
-  int32_t a[BATCH_LANES], b[BATCH_LANES]; /* solver bodies (the inert one in unused lanes) */
-  int32_t contact[BATCH_LANES];           /* index in the contact list, -1 unused */
-  int32_t points;                         /* the most points of its lanes' contacts: with
-                                             1, the kernels leave p[1] alone */
-  double im_a[BATCH_LANES], ii_a[BATCH_LANES], im_b[BATCH_LANES], ii_b[BATCH_LANES];
-  double friction[BATCH_LANES], slop[BATCH_LANES], max_push[BATCH_LANES];
+/* What only a batch of two-point lanes has: the 2x2 problem of its faces
+ * and its second point. */
+typedef struct batch_pair {
   double k11[BATCH_LANES], k12[BATCH_LANES], k22[BATCH_LANES]; /* the 2x2 matrix K */
   double i11[BATCH_LANES], i12[BATCH_LANES], i22[BATCH_LANES]; /* its inverse */
   double pair[BATCH_LANES];  /* 1: the two points are solved as one 2x2 problem */
   double block[BATCH_LANES]; /* 1: and K is invertible (contact_lcp2's first case) */
-  batch_point p[2];
+  batch_point p1;
+} batch_pair;
+
+/* The batches lie one after the other, each as long as its lanes need: a
+ * batch of one-point lanes (points 1) ends where `two` would begin, so the
+ * passes stream through two thirds of the bytes for it (most of a pile's
+ * contacts touch at one point). batch_next steps over one. */
+typedef struct contact_batch {
+  int32_t a[BATCH_LANES], b[BATCH_LANES]; /* solver bodies (the inert one in unused lanes) */
+  int32_t contact[BATCH_LANES];           /* index in the contact list, -1 unused */
+  int32_t points;                         /* the most points of its lanes' contacts: 1 or 2 */
+  double im_a[BATCH_LANES], ii_a[BATCH_LANES], im_b[BATCH_LANES], ii_b[BATCH_LANES];
+  double friction[BATCH_LANES], slop[BATCH_LANES], max_push[BATCH_LANES];
+  batch_point p0;
+  batch_pair two;                         /* points 2 only */
 } contact_batch;
+
+/* The bytes a batch of `points`-point lanes takes. */
+#define CONTACT_BATCH_SIZE(points) ((points) > 1 ? sizeof (contact_batch) : offsetof (contact_batch, two))
+
+/* Point j of batch c (0 or 1; 1 only where it has two). */
+#define BATCH_POINT(c, j) ((j) == 0 ? &(c)->p0 : &(c)->two.p1)
+
+/* The batch after c. */
+static inline contact_batch *batch_next (const contact_batch *c)
+{
+  return (contact_batch *) ((char *) c + CONTACT_BATCH_SIZE (c->points));
+}
 
 /* The path this CPU runs best (AVX2 where the CPU has it). */
 solver_path solver_path_best (void);

@@ -195,13 +195,13 @@ KERNEL_FN wide KERNEL (separation) (const KERNEL (lanes) *a, const KERNEL (lanes
  * taken. Returns the lanes where one holds. */
 KERNEL_FN wmask KERNEL (lcp2) (const contact_batch *c, wide b1, wide b2, wide *x1, wide *x2)
 {
-  wide zero = W_SET1 (0.0), k12 = W_LOAD (c->k12);
-  wide y1 = W_NEG (W_ADD (W_MUL (W_LOAD (c->i11), b1), W_MUL (W_LOAD (c->i12), b2)));
-  wide y2 = W_NEG (W_ADD (W_MUL (W_LOAD (c->i12), b1), W_MUL (W_LOAD (c->i22), b2)));
-  wmask both = M_AND (M_GT (W_LOAD (c->block), zero), M_AND (M_GE (y1, zero), M_GE (y2, zero)));
-  wide z1 = W_NEG (W_MUL (b1, W_LOAD (c->p[0].normal_mass)));
+  wide zero = W_SET1 (0.0), k12 = W_LOAD (c->two.k12);
+  wide y1 = W_NEG (W_ADD (W_MUL (W_LOAD (c->two.i11), b1), W_MUL (W_LOAD (c->two.i12), b2)));
+  wide y2 = W_NEG (W_ADD (W_MUL (W_LOAD (c->two.i12), b1), W_MUL (W_LOAD (c->two.i22), b2)));
+  wmask both = M_AND (M_GT (W_LOAD (c->two.block), zero), M_AND (M_GE (y1, zero), M_GE (y2, zero)));
+  wide z1 = W_NEG (W_MUL (b1, W_LOAD (c->p0.normal_mass)));
   wmask first = M_AND (M_GE (z1, zero), M_GE (W_ADD (W_MUL (k12, z1), b2), zero));
-  wide z2 = W_NEG (W_MUL (b2, W_LOAD (c->p[1].normal_mass)));
+  wide z2 = W_NEG (W_MUL (b2, W_LOAD (c->two.p1.normal_mass)));
   wmask second = M_AND (M_GE (z2, zero), M_GE (W_ADD (W_MUL (k12, z2), b1), zero));
   wmask neither = M_AND (M_GE (b1, zero), M_GE (b2, zero));
   *x1 = W_SEL (both, y1, W_SEL (first, z1, zero));
@@ -215,15 +215,15 @@ KERNEL_FN wmask KERNEL (lcp2) (const contact_batch *c, wide b1, wide b2, wide *x
 KERNEL_FN void KERNEL (normal) (const contact_batch *c, KERNEL (lanes) *a, KERNEL (lanes) *b, const KERNEL (mass) *m,
                                 const wide *bias, wide *x, wmask use)
 {
-  const batch_point *p0 = &c->p[0], *p1 = &c->p[1];
+  const batch_point *p0 = &c->p0, *p1 = &c->two.p1;
   wide zero = W_SET1 (0.0);
   wide n0x = W_LOAD (p0->nx), n0y = W_LOAD (p0->ny), n1x = W_LOAD (p1->nx), n1y = W_LOAD (p1->ny);
   wide r0a = W_LOAD (p0->rn_a), r0b = W_LOAD (p0->rn_b), r1a = W_LOAD (p1->rn_a), r1b = W_LOAD (p1->rn_b);
-  wide k11 = W_LOAD (c->k11), k12 = W_LOAD (c->k12), k22 = W_LOAD (c->k22);
+  wide k11 = W_LOAD (c->two.k11), k12 = W_LOAD (c->two.k12), k22 = W_LOAD (c->two.k22);
   wide y0, y1, acc, d;
   wide b0 = W_SUB (W_ADD (KERNEL (speed) (a, b, n0x, n0y, r0a, r0b), bias[0]), W_ADD (W_MUL (k11, x[0]), W_MUL (k12, x[1])));
   wide b1 = W_SUB (W_ADD (KERNEL (speed) (a, b, n1x, n1y, r1a, r1b), bias[1]), W_ADD (W_MUL (k12, x[0]), W_MUL (k22, x[1])));
-  wmask ok = M_AND (M_AND (KERNEL (lcp2) (c, b0, b1, &y0, &y1), M_GT (W_LOAD (c->pair), zero)), use);
+  wmask ok = M_AND (M_AND (KERNEL (lcp2) (c, b0, b1, &y0, &y1), M_GT (W_LOAD (c->two.pair), zero)), use);
   wmask one = M_ANDNOT (use, ok);
   /* a part no lane takes is skipped (on every path alike: M_ANY is exact) */
   if (M_ANY (ok))
@@ -252,7 +252,7 @@ KERNEL_FN void KERNEL (normal) (const contact_batch *c, KERNEL (lanes) *a, KERNE
 KERNEL_FN void KERNEL (normal1) (const contact_batch *c, KERNEL (lanes) *a, KERNEL (lanes) *b, const KERNEL (mass) *m,
                                  const wide *bias, wide *x, wmask use)
 {
-  const batch_point *p0 = &c->p[0];
+  const batch_point *p0 = &c->p0;
   wide zero = W_SET1 (0.0);
   wide n0x = W_LOAD (p0->nx), n0y = W_LOAD (p0->ny), r0a = W_LOAD (p0->rn_a), r0b = W_LOAD (p0->rn_b);
   wide acc = W_MAX (W_SUB (x[0], W_MUL (W_LOAD (p0->normal_mass), W_ADD (KERNEL (speed) (a, b, n0x, n0y, r0a, r0b), bias[0]))), zero);
@@ -270,7 +270,7 @@ KERNEL_FN void KERNEL (warm_start_batch) (contact_batch *c, solver_body *sb, int
   KERNEL (gather) (sb, c->b, &b, 0);
   for (j = 0; j < np; ++j)
     {
-      batch_point *p = &c->p[j];
+      batch_point *p = BATCH_POINT (c, j);
       wide nx = W_LOAD (p->nx), ny = W_LOAD (p->ny);
       KERNEL (push) (&a, &b, &m, nx, ny, W_LOAD (p->rn_a), W_LOAD (p->rn_b), W_LOAD (p->normal_impulse));
       W_STORE (p->total, W_ADD (W_LOAD (p->total), W_LOAD (p->normal_impulse)));
@@ -283,7 +283,7 @@ KERNEL_FN void KERNEL (warm_start_batch) (contact_batch *c, solver_body *sb, int
 KERNEL_ATTR void KERNEL (contact_batch_warm_start) (contact_batch *c, int32_t n, solver_body *sb)
 {
   int32_t i;
-  for (i = 0; i < n; ++i, ++c)
+  for (i = 0; i < n; ++i, c = batch_next (c))
     if (c->points > 1)
       KERNEL (warm_start_batch) (c, sb, 2);
     else
@@ -295,8 +295,8 @@ KERNEL_ATTR void KERNEL (contact_batch_warm_start) (contact_batch *c, int32_t n,
 KERNEL_FN void KERNEL (separations) (const contact_batch *c, const KERNEL (lanes) *a, const KERNEL (lanes) *b, wide *s,
                                      int np)
 {
-  s[0] = KERNEL (separation) (a, b, &c->p[0]);
-  s[1] = np > 1 ? KERNEL (separation) (a, b, &c->p[1]) : W_SET1 (0.0);
+  s[0] = KERNEL (separation) (a, b, &c->p0);
+  s[1] = np > 1 ? KERNEL (separation) (a, b, &c->two.p1) : W_SET1 (0.0);
 }
 
 /* One solve pass of a batch on its bodies' velocities a, b, the points
@@ -311,7 +311,7 @@ KERNEL_FN void KERNEL (solve_lanes) (contact_batch *c, KERNEL (lanes) *a, KERNEL
     {
       /* a speculative point may close its gap within the sub-step */
       bias[j] = W_SEL (M_GT (s[j], zero), W_MUL (s[j], ih), zero);
-      x[j] = before[j] = W_LOAD (c->p[j].normal_impulse);
+      x[j] = before[j] = W_LOAD (BATCH_POINT (c, j)->normal_impulse);
     }
   if (np > 1)
     KERNEL (normal) (c, a, b, m, bias, x, M_GE (zero, zero));
@@ -319,7 +319,7 @@ KERNEL_FN void KERNEL (solve_lanes) (contact_batch *c, KERNEL (lanes) *a, KERNEL
     KERNEL (normal1) (c, a, b, m, bias, x, M_GE (zero, zero));
   for (j = 0; j < np; ++j)
     {
-      batch_point *p = &c->p[j];
+      batch_point *p = BATCH_POINT (c, j);
       wide tx = W_NEG (W_LOAD (p->ny)), ty = W_LOAD (p->nx), rta = W_LOAD (p->rt_a), rtb = W_LOAD (p->rt_b);
       wide old = W_LOAD (p->tangent_impulse), limit = W_MUL (friction, x[j]);
       wide acc = W_SUB (old, W_MUL (W_LOAD (p->tangent_mass), KERNEL (speed) (a, b, tx, ty, rta, rtb)));
@@ -347,7 +347,7 @@ KERNEL_FN int KERNEL (push_lanes) (contact_batch *c, KERNEL (lanes) *a, KERNEL (
       wide e = W_ADD (s[j], slop);
       bias[j] = W_SEL (M_GE (e, zero), zero, W_MAX (W_MUL (rate, e), fastest));
       /* last sub-step's push was dropped with the move */
-      x[j] = first ? zero : W_LOAD (c->p[j].push_impulse);
+      x[j] = first ? zero : W_LOAD (BATCH_POINT (c, j)->push_impulse);
       use = M_OR (use, M_OR (M_LT (bias[j], zero), M_GT (x[j], zero)));
     }
   if (M_ANY (use))
@@ -358,7 +358,7 @@ KERNEL_FN int KERNEL (push_lanes) (contact_batch *c, KERNEL (lanes) *a, KERNEL (
         KERNEL (normal1) (c, a, b, m, bias, x, use);
     }
   for (j = 0; j < np; ++j)
-    W_STORE (c->p[j].push_impulse, x[j]);
+    W_STORE (BATCH_POINT (c, j)->push_impulse, x[j]);
   return M_ANY (use);
 }
 
@@ -389,7 +389,7 @@ KERNEL_ATTR void KERNEL (contact_batch_solve) (contact_batch *c, int32_t n, solv
 {
   wide ih = W_SET1 (inv_h);
   int32_t i;
-  for (i = 0; i < n; ++i, ++c)
+  for (i = 0; i < n; ++i, c = batch_next (c))
     if (c->points > 1)
       KERNEL (solve_batch) (c, sb, ih, 2);
     else
@@ -413,7 +413,7 @@ KERNEL_ATTR void KERNEL (contact_batch_push_out) (contact_batch *c, int32_t n, s
 {
   wide rate = W_SET1 (push_rate);
   int32_t i;
-  for (i = 0; i < n; ++i, ++c)
+  for (i = 0; i < n; ++i, c = batch_next (c))
     if (c->points > 1)
       KERNEL (push_out_batch) (c, sb, rate, first, 2);
     else
@@ -452,7 +452,7 @@ KERNEL_ATTR void KERNEL (contact_batch_solve_push_out) (contact_batch *c, int32_
 {
   wide ih = W_SET1 (inv_h), rate = W_SET1 (push_rate);
   int32_t i;
-  for (i = 0; i < n; ++i, ++c)
+  for (i = 0; i < n; ++i, c = batch_next (c))
     if (c->points > 1)
       KERNEL (solve_push_out_batch) (c, sb, ih, rate, 2);
     else

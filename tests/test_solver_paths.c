@@ -86,9 +86,9 @@ static void check_batches (const carom_world *w, int32_t *batched_total, int32_t
   const contacts *c = &w->contacts;
   int32_t i, lanes = 0, marked = 0;
   int l, m;
-  for (i = 0; i < w->batch_count; ++i)
+  const contact_batch *b = w->batches;
+  for (i = 0; i < w->batch_count; ++i, b = batch_next (b))
     {
-      const contact_batch *b = &w->batches[i];
       assert_true (b->points == 1 || b->points == 2);
       *single += b->points == 1;
       for (l = 0; l < BATCH_LANES; ++l)
