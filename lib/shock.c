@@ -128,9 +128,9 @@ static void mark_loaded (carom_world *world, const int32_t *order, int32_t count
  * which body is the upper one, and its share of the point's effective mass
  * with the lower body held still. A row's points follow those of the row
  * before it in world.shock_points: rows of one or two points (nearly all)
- * take no room for the four a contact may have. The impulse raises vn: +x n on b, or
- * -x n on a; its sign is folded into im_up and ang (x times -1 is exact,
- * so the upper body moves by the same bits either way). */
+ * take no room for the four a contact may have. The impulse raises vn:
+ * +x n on b, or -x n on a; its sign is folded into im_up and ang (x times
+ * -1 is exact, so the upper body moves by the same bits either way). */
 typedef struct shock_point {
   vec2 normal, ra, rb;
   double adjusted, rn_a, rn_b;
