@@ -51,12 +51,12 @@ double polygons_separation (const convex_piece *a, xform xa, const convex_piece 
  * clipped to, from its feature: edge *edge of a (*side 0) or of b (*side 1);
  * 0 for a corner's point, which has none. */
 int sat_feature_face (uint32_t feature, int *side, int32_t *edge);
-/* The same, and the face whose normal that is: edge e of a as e, edge e of
- * b as -1 - e. */
 /* The outward normal of a face of two pieces, turned to point from a to
  * b: an edge of a, or -1 - an edge of b (polygons_separation_face's
  * `face`). */
 vec2 polygons_face_axis (const convex_piece *a, xform xa, const convex_piece *b, xform xb, int32_t face);
+/* polygons_separation, and the face whose normal that is: edge e of a as
+ * e, edge e of b as -1 - e. */
 double polygons_separation_face (const convex_piece *a, xform xa, const convex_piece *b, xform xb, vec2 *axis,
                                  int32_t *face);
 
