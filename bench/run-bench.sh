@@ -344,6 +344,12 @@ libbox2d-dev $(pkgv libbox2d-dev) (Debian packages)${B3_PEER}.
     engine, bench_joint_gap in bench/scenes.c); the links are 0.25 long.
 * Rounds: the engines run interleaved ($ENGINES), $REPEATS rounds; the
   table gives the median, then every round. **carom / engine** > 1 means carom is slower.
+* Two builds of carom are compared in time by \`tools/compare-bench A B PAIRS
+  [options]\`: A and B run in pairs whose order alternates, and it prints
+  the median of B's time over A's, for all pairs and for each order apart.
+  On this machine the second of two runs in a row is often a few percent
+  faster or slower than the first, so pairs timed in one order measure that
+  as well.
 * Build: every bench is compiled by the same compiler with \`-O2 -g\` (\`\$(OPT)\`);
   C with \`-std=c99\` (the Box2D v3 bench with \`-std=c11\`, which its headers need),
   the Box2D 2.4 bench with \`-std=c++17\`. carom is linked statically from this tree,
@@ -654,11 +660,15 @@ EOF
   the second point and the 2x2 problem it never reads, and a shock row
   holds the points its contact has (an 80-byte row and 96 bytes a point,
   not 456 bytes for every row). Those two took the settled rain's time
-  down by 6.7% (the median ratio of 20 pairs of runs, one build after the
-  other, `bench_carom scene=rain warmup=450 steps=100`; the fastest runs
-  2.29 and 2.17 ms) with the same bits; cachegrind with a 2 MB last level
-  (`--LL=2097152,16,64`, `warmup=0 steps=300`) counted 28.4M read misses
-  there before, 25.2M after.
+  down by about 2%, with the same bits: `tools/compare-bench` (two
+  builds, runs in pairs whose order alternates, `scene=rain warmup=450
+  steps=100`) gave a median ratio of 0.984 and 0.977 in two runs of 20
+  pairs, the fastest runs 1.94 and 1.89 ms, 1.97 and 1.91. (Timed always
+  in the same order the two builds had given 0.933: on this machine the
+  second of two runs in a row is often a few percent faster or slower
+  than the first, in either direction from one run of pairs to the next.)
+  Cachegrind with a 2 MB last level (`--LL=2097152,16,64`, `warmup=0
+  steps=300`) counted 28.4M read misses there before, 25.2M after.
   Branches that the data decide cost as much: cachegrind's branch
   simulation (`valgrind --tool=cachegrind --branch-sim=yes` on
   `bench_carom scene=rain warmup=0 steps=300`) counted 88k mispredicted
