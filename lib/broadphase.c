@@ -345,13 +345,57 @@ static int mend_kept (carom_world *world, int32_t n)
 /* Kept pairs tested at a time by report_kept. */
 #define REPORT_CHUNK 64
 
+/* Reporting the kept pairs of a world of PREFETCH_MIN_BODIES live bodies
+ * or more (broadphase.h), the bodies of the pair PREFETCH_AHEAD places on
+ * and the convex pieces of the pair half as far on are asked of the
+ * memory before the pair's turn. Each pair's detection reads both bodies'
+ * first four cache lines (body.h) and their pieces, and the kept pairs
+ * come in the order of the bodies' boxes, not of their slots: in a world
+ * that outgrows the caches the detection waited for them (`perf` on the
+ * settled rain: the loads of a body's shape and of a piece's centre were
+ * detect_pair's slowest instructions, and it took 14% of the step for 6%
+ * of the instructions). In smaller worlds they stay in the caches from one
+ * step to the next, and the requests would only add instructions. No
+ * result depends on them. */
+#define PREFETCH_AHEAD 4
+
+#ifdef __GNUC__
+#define prefetch(p) __builtin_prefetch (p)
+#else
+#define prefetch(p) ((void) 0)
+#endif
+
+static void prefetch_body (const carom_world *world, int32_t slot)
+{
+  const char *b = (const char *) &world->bodies[slot];
+  /* a body's first four lines, wherever its 360 bytes begin in a line */
+  prefetch (b);
+  prefetch (b + 64);
+  prefetch (b + 128);
+  prefetch (b + 192);
+  prefetch (b + 255);
+}
+
+/* (the body's line with shape.pieces has been asked for already) */
+static void prefetch_pieces (const carom_world *world, int32_t slot)
+{
+  const convex_piece *p = world->bodies[slot].shape.pieces;
+  if (p)
+    {
+      prefetch (p);
+      prefetch (p->vertices);
+      prefetch (p->normals);
+    }
+}
+
 /* Report the kept pairs whose boxes meet, in the order they were kept. The
  * meetings of a chunk are noted without a branch (whether two fat boxes'
  * boxes meet is not predictable), then reported. */
 static void report_kept (carom_world *world, pair_callback fn, void *user)
 {
   broadphase *bp = &world->broad;
-  int32_t i, k, met[REPORT_CHUNK];
+  int32_t i, k, met[REPORT_CHUNK], sa[REPORT_CHUNK], sb[REPORT_CHUNK];
+  int ahead = world->live_count >= PREFETCH_MIN_BODIES;
   for (i = 0; i < bp->pair_count; i += 2 * REPORT_CHUNK)
     {
       int32_t end = i + 2 * REPORT_CHUNK < bp->pair_count ? i + 2 * REPORT_CHUNK : bp->pair_count, hits = 0;
@@ -361,8 +405,31 @@ static void report_kept (carom_world *world, pair_callback fn, void *user)
           met[hits] = k;
           hits += (e->lo <= f->hi) & (f->lo <= e->hi) & (e->lo2 <= f->hi2) & (f->lo2 <= e->hi2);
         }
+      if (!ahead)
+        {
+          for (k = 0; k < hits; ++k)
+            fn (world, bp->entries[bp->pairs[met[k]]].slot, bp->entries[bp->pairs[met[k] + 1]].slot, user);
+          continue;
+        }
       for (k = 0; k < hits; ++k)
-        fn (world, bp->entries[bp->pairs[met[k]]].slot, bp->entries[bp->pairs[met[k] + 1]].slot, user);
+        {
+          sa[k] = bp->entries[bp->pairs[met[k]]].slot;
+          sb[k] = bp->entries[bp->pairs[met[k] + 1]].slot;
+        }
+      for (k = 0; k < hits; ++k)
+        {
+          if (k + PREFETCH_AHEAD < hits)
+            {
+              prefetch_body (world, sa[k + PREFETCH_AHEAD]);
+              prefetch_body (world, sb[k + PREFETCH_AHEAD]);
+            }
+          if (k + PREFETCH_AHEAD / 2 < hits)
+            {
+              prefetch_pieces (world, sa[k + PREFETCH_AHEAD / 2]);
+              prefetch_pieces (world, sb[k + PREFETCH_AHEAD / 2]);
+            }
+          fn (world, sa[k], sb[k], user);
+        }
     }
 }
 

@@ -47,6 +47,11 @@ typedef struct fat_box {
  * their boxes), then looked at again. */
 #define BROAD_MOVING_STEPS 8
 
+/* Worlds of this many live bodies or more have the bodies of the kept
+ * pairs asked of the memory ahead of their turn (broadphase.c,
+ * report_kept). */
+#define PREFETCH_MIN_BODIES 1024
+
 /* Worlds of this many live bodies use the grid. (The fuzz build lowers it,
  * so that small fuzzed worlds exercise both methods.) */
 #ifndef GRID_MIN_BODIES

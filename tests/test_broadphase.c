@@ -224,30 +224,33 @@ static void test_degenerate_layouts (void **state)
   carom_world_destroy (w);
 }
 
-/* 400 bodies of mixed shapes and sizes in a loose grid on a static floor;
- * detection after detection, none, a few or many of them jump (by a bit,
- * or across the world): the sweep reports the pairs whose boxes meet every
- * time, and the few jumps were taken by mending the kept pairs, the many
- * by sweeping. */
-static void test_kept_pairs_follow_jumping_bodies (void **state)
+/* n bodies of mixed shapes and sizes in a loose grid on a static floor;
+ * detection after detection (`rounds` of them), none, a few or many of
+ * them jump (by a bit, or across the world): the sweep reports the pairs
+ * whose boxes meet every time, more than min_pairs. Returns how many times the kept pairs were
+ * tested alone, mended for the few jumps, and the boxes swept for the
+ * many. */
+static void jumping_bodies (int32_t n, int32_t rounds, int32_t min_pairs, int32_t *kept, int32_t *mended,
+                            int32_t *swept)
 {
   carom_world *w = new_world ();
-  carom_body_id ids[401];
+  carom_body_id *ids = malloc ((size_t) (n + 1) * sizeof *ids);
   uint32_t seed = 777;
-  int32_t i, round, mended = 0, swept = 0, kept = 0;
-  (void) state;
+  int32_t i, round;
+  assert_non_null (ids);
+  *kept = *mended = *swept = 0;
   add_body (w, CAROM_STATIC, 10, -1, 30, 1);
-  for (i = 0; i < 400; ++i)
+  for (i = 0; i < n; ++i)
     add_body (w, CAROM_DYNAMIC, 1.1 * (i % 20), 1.1 * (i / 20), 0.6 + 0.6 * next_unit (&seed), i);
-  assert_int_equal (carom_world_get_bodies (w, ids, 401), 401);
-  for (round = 0; round < 120; ++round)
+  assert_int_equal (carom_world_get_bodies (w, ids, n + 1), n + 1);
+  for (round = 0; round < rounds; ++round)
     {
       /* none for a while, then one to four jumping, now and then thirty */
       int32_t jumps = round < 12 ? 0 : round % 40 == 39 ? 30 : round % 3 == 0 ? 0 : 1 + (int32_t) (4 * next_unit (&seed));
       int escaped_before = 0;
       for (i = 0; i < jumps; ++i)
         {
-          carom_body_id id = ids[1 + (int32_t) (400 * next_unit (&seed))];
+          carom_body_id id = ids[1 + (int32_t) (n * next_unit (&seed))];
           double x, y, far = next_unit (&seed) < 0.3 ? 20.0 : 0.4;
           assert_status (carom_body_get_position (w, id, &x, &y), CAROM_OK);
           assert_status (carom_body_set_position (w, id, x + far * (next_unit (&seed) - 0.5),
@@ -255,18 +258,42 @@ static void test_kept_pairs_follow_jumping_bodies (void **state)
                          CAROM_OK);
         }
       escaped_before = jumps > 0 && w->broad.pairs_valid && w->updates >= w->broad.look_at;
-      assert_true (sweep_pairs_in (w, 1.0 / 60.0) > 400);
+      assert_true (sweep_pairs_in (w, 1.0 / 60.0) > min_pairs);
       if (jumps == 0)
-        kept += w->broad.pairs_valid;
+        *kept += w->broad.pairs_valid;
       else if (escaped_before && w->broad.pairs_valid)
-        mended++;
+        (*mended)++;
       else if (!w->broad.pairs_valid)
-        swept++;
+        (*swept)++;
     }
+  free (ids);
+  carom_world_destroy (w);
+}
+
+/* 400 bodies, 120 detections: each way of reporting was taken. */
+static void test_kept_pairs_follow_jumping_bodies (void **state)
+{
+  int32_t kept, mended, swept;
+  (void) state;
+  jumping_bodies (400, 120, 400, &kept, &mended, &swept);
   print_message ("kept pairs tested alone %d times, mended %d times, boxes swept %d times\n", (int) kept,
                  (int) mended, (int) swept);
   assert_true (kept >= 5 && mended >= 5 && swept >= 5);
-  carom_world_destroy (w);
+}
+
+/* The same in a world large enough that the kept pairs' bodies are asked
+ * of the memory ahead of their turn (PREFETCH_MIN_BODIES, still below the
+ * grid's GRID_MIN_BODIES): the same pairs, with the kept pairs tested
+ * alone, and mended. */
+static void test_kept_pairs_of_a_large_world (void **state)
+{
+  int32_t kept, mended, swept, n = PREFETCH_MIN_BODIES + 100;
+  (void) state;
+  assert_true (n + 1 < GRID_MIN_BODIES);
+  jumping_bodies (n, 24, 500, &kept, &mended, &swept);
+  print_message ("kept pairs tested alone %d times, mended %d times, boxes swept %d times\n", (int) kept,
+                 (int) mended, (int) swept);
+  assert_true (kept >= 5 && mended >= 5);
 }
 
 /* Two unit boxes 0.08 apart along the sweep axis, nothing moving, until
@@ -299,6 +326,7 @@ int main (void)
   const struct CMUnitTest tests[] = {
     cmocka_unit_test (test_kept_pairs_hold_bodies_closing_within_their_fat_boxes),
     cmocka_unit_test (test_kept_pairs_follow_jumping_bodies),
+    cmocka_unit_test (test_kept_pairs_of_a_large_world),
     cmocka_unit_test (test_crowded_mixed_sizes_with_walls),
     cmocka_unit_test (test_degenerate_layouts),
   };
