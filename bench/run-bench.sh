@@ -670,8 +670,10 @@ EOF
   Cachegrind with a 2 MB last level (`--LL=2097152,16,64`, `warmup=0
   steps=300`) counted 28.4M read misses there before, 25.2M after.
   Sampled in time (`perf record` on `bench_carom scene=rain warmup=450
-  steps=1500`), detect_pair took 14% of the settled rain's step, where it
-  executes 6% of the instructions: the kept pairs come in the order of
+  steps=1500`, the rain settled after its first 450 steps), detect_pair
+  took 14% of the samples, where it executes 11% of the instructions
+  (callgrind, `warmup=450 steps=100`, with what the compiler inlined
+  into it): the kept pairs come in the order of
   the bodies' boxes, not of their slots, and each pair's detection waited
   for both bodies' first cache lines and their convex pieces, its slowest
   instructions the loads of a body's shape and of a piece's centre. In

@@ -353,7 +353,7 @@ static int mend_kept (carom_world *world, int32_t n)
  * come in the order of the bodies' boxes, not of their slots: in a world
  * that outgrows the caches the detection waited for them (`perf` on the
  * settled rain: the loads of a body's shape and of a piece's centre were
- * detect_pair's slowest instructions, and it took 14% of the step for 6%
+ * detect_pair's slowest instructions, and it took 14% of the time for 11%
  * of the instructions). In smaller worlds they stay in the caches from one
  * step to the next, and the requests would only add instructions. No
  * result depends on them. */
