@@ -388,6 +388,22 @@ static void prefetch_pieces (const carom_world *world, int32_t slot)
     }
 }
 
+/* Before pair k of the n whose bodies are in slots sa[], sb[]. */
+static void prefetch_pairs_ahead (const carom_world *world, const int32_t *sa, const int32_t *sb, int32_t k,
+                                  int32_t n)
+{
+  if (k + PREFETCH_AHEAD < n)
+    {
+      prefetch_body (world, sa[k + PREFETCH_AHEAD]);
+      prefetch_body (world, sb[k + PREFETCH_AHEAD]);
+    }
+  if (k + PREFETCH_AHEAD / 2 < n)
+    {
+      prefetch_pieces (world, sa[k + PREFETCH_AHEAD / 2]);
+      prefetch_pieces (world, sb[k + PREFETCH_AHEAD / 2]);
+    }
+}
+
 /* Report the kept pairs whose boxes meet, in the order they were kept. The
  * meetings of a chunk are noted without a branch (whether two fat boxes'
  * boxes meet is not predictable), then reported. */
@@ -405,12 +421,6 @@ static void report_kept (carom_world *world, pair_callback fn, void *user)
           met[hits] = k;
           hits += (e->lo <= f->hi) & (f->lo <= e->hi) & (e->lo2 <= f->hi2) & (f->lo2 <= e->hi2);
         }
-      if (!ahead)
-        {
-          for (k = 0; k < hits; ++k)
-            fn (world, bp->entries[bp->pairs[met[k]]].slot, bp->entries[bp->pairs[met[k] + 1]].slot, user);
-          continue;
-        }
       for (k = 0; k < hits; ++k)
         {
           sa[k] = bp->entries[bp->pairs[met[k]]].slot;
@@ -418,16 +428,8 @@ static void report_kept (carom_world *world, pair_callback fn, void *user)
         }
       for (k = 0; k < hits; ++k)
         {
-          if (k + PREFETCH_AHEAD < hits)
-            {
-              prefetch_body (world, sa[k + PREFETCH_AHEAD]);
-              prefetch_body (world, sb[k + PREFETCH_AHEAD]);
-            }
-          if (k + PREFETCH_AHEAD / 2 < hits)
-            {
-              prefetch_pieces (world, sa[k + PREFETCH_AHEAD / 2]);
-              prefetch_pieces (world, sb[k + PREFETCH_AHEAD / 2]);
-            }
+          if (ahead)
+            prefetch_pairs_ahead (world, sa, sb, k, hits);
           fn (world, sa[k], sb[k], user);
         }
     }

@@ -227,9 +227,9 @@ static void test_degenerate_layouts (void **state)
 /* n bodies of mixed shapes and sizes in a loose grid on a static floor;
  * detection after detection (`rounds` of them), none, a few or many of
  * them jump (by a bit, or across the world): the sweep reports the pairs
- * whose boxes meet every time, more than min_pairs. Returns how many times the kept pairs were
- * tested alone, mended for the few jumps, and the boxes swept for the
- * many. */
+ * whose boxes meet every time, more than min_pairs. Returns how many
+ * times the kept pairs were tested alone, mended for the few jumps, and
+ * the boxes swept for the many. */
 static void jumping_bodies (int32_t n, int32_t rounds, int32_t min_pairs, int32_t *kept, int32_t *mended,
                             int32_t *swept)
 {
