@@ -122,6 +122,10 @@ typedef struct pair_context {
   int bouncy_swept;      /* a bouncy pair, its bodies in free flight
                             (step_context.free_flight), looking as far as
                             that closes it (detect_pair): clear_of_step */
+  const step_context *ctx;
+  double reach;          /* detect_pair's reach */
+  int margins_set;       /* margin and margin_kept are computed
+                            (pair_margins) */
 } pair_context;
 
 /* Where each point of a freshly computed manifold lies: a's copy of it
@@ -468,9 +472,50 @@ static void defer_pair (carom_world *world, int32_t a, int32_t b)
   c->deferred_count++;
 }
 
+/* The margins of pair pc (pair_context.margin and margin_kept), computed
+ * when first needed: a pair of polygons whose pieces' bounding circles
+ * overlap and whose manifolds are all reused needs neither. The speculative
+ * margin: pairs that can close their gap within this step are contacts now,
+ * so impacts are met before the bodies overlap. */
+static void pair_margins (const carom_world *world, pair_context *pc)
+{
+  const step_context *ctx = pc->ctx;
+  const body *A = &world->bodies[pc->a], *B = &world->bodies[pc->b];
+  double ra = world->broad.reach[pc->a], rb = world->broad.reach[pc->b];
+  if (pc->margins_set)
+    return;
+  pc->margins_set = 1;
+  if (pc->reach >= 0.0)
+    pc->margin = pc->slop + pc->reach;
+  else if (body_pair_swept (A, ra, B, rb, ctx->dt, ctx->accel, ctx->continuous))
+    /* with the world's continuous collision or a bullet, an inelastic pair
+     * looks as far as a body goes when what it flies with is stopped (a box
+     * of a falling stack landing under the next): nothing else follows it.
+     * A bouncy pair's bodies are followed by the impacts, which search
+     * again for the pairs they change (contacts_after_impacts); a body
+     * swept only for being fast looks no further than free flight closes
+     * the pair. */
+    pc->margin = pc->slop + body_pair_reach (A, B, ctx->dt, ctx->accel,
+                                             pc->restitution == 0.0 && (ctx->continuous || A->bullet || B->bullet));
+  else
+    pc->margin = pc->slop + body_reach_capped (A, ra, 0) + body_reach_capped (B, rb, 0);
+  pc->margin_kept = pc->reach >= 0.0 ? pc->margin : pc->slop + ra + rb;
+}
+
+/* Whether the bounding circles of two pieces, r apart (their radii's sum
+ * rr), come within the pair's margin: at once when they overlap, for which
+ * the margin (never negative) is not needed. */
+static int pieces_near (const carom_world *world, pair_context *pc, double r, double rr)
+{
+  if (!(r > rr))
+    return 1;
+  pair_margins (world, pc);
+  return !(r > rr + pc->margin);
+}
+
 /* The narrow phase for one pair of pieces, or last step's points moved
  * (reuse_contact), then the contact. */
-static void pair_pieces (carom_world *world, int32_t pa, int32_t pb, const pair_context *pc, manifold *m, int can_reuse)
+static void pair_pieces (carom_world *world, int32_t pa, int32_t pb, pair_context *pc, manifold *m, int can_reuse)
 {
   int32_t old = find_old (world, pc->a, pc->b, pa, pb);
   int clear;
@@ -482,6 +527,7 @@ static void pair_pieces (carom_world *world, int32_t pa, int32_t pb, const pair_
      * resting speculative point costs the solver little; a bouncy one
      * would take the time of impact's work for every corner nearby. */
     {
+      pair_margins (world, pc);
       narrow_phase (world, pc->a, pc->b, pa, pb, pc->pieces_a, pc->pieces_b, pc->xa, pc->xb,
                     old >= 0 && pc->restitution == 0.0 ? pc->margin_kept : pc->margin, NULL, m);
       clear = pc->bouncy_swept && m->count > 0 && clear_of_step (world, pc->a, pc->b, pa, pb, pc, pc->xa, pc->xb, m);
@@ -723,6 +769,7 @@ static void on_compound_pair (carom_world *world, pair_context *pc)
   int32_t na = body_pieces (A, &P, &ca), nb = body_pieces (B, &Q, &cb), i, j;
   int compound_a = A->shape.kind == CAROM_SHAPE_COMPOUND, compound_b = B->shape.kind == CAROM_SHAPE_COMPOUND;
   manifold m;
+  pair_margins (world, pc);
   pc->pieces_a = P;
   pc->pieces_b = Q;
   for (i = 0; i < na; ++i)
@@ -818,7 +865,6 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
   pair_context pc;
   manifold m;
   int32_t i, j;
-  int swept;
   /* order: polygon before circle, else lower slot first, so the normal
    * convention of each narrow-phase test holds and the result does not
    * depend on the broad phase's order (with a compound: lower slot first,
@@ -848,25 +894,9 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
     return;
   mix_materials (world, A->restitution, A->friction, B->restitution, B->friction, &pc);
   pc.slop = world->def.slop * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
-  /* speculative margin: pairs that can close their gap within this step
-   * are contacts now, so impacts are met before the bodies overlap */
-  swept = body_pair_swept (A, world->broad.reach[a], B, world->broad.reach[b], ctx->dt, ctx->accel, ctx->continuous);
-  if (reach >= 0.0)
-    pc.margin = pc.slop + reach;
-  else if (swept)
-    /* with the world's continuous collision or a bullet, an inelastic pair
-     * looks as far as a body goes when what it flies with is stopped (a box
-     * of a falling stack landing under the next): nothing else follows it.
-     * A bouncy pair's bodies are followed by the impacts, which search
-     * again for the pairs they change (contacts_after_impacts); a body
-     * swept only for being fast looks no further than free flight closes
-     * the pair. */
-    pc.margin = pc.slop + body_pair_reach (A, B, ctx->dt, ctx->accel,
-                                           pc.restitution == 0.0 && (ctx->continuous || A->bullet || B->bullet));
-  else
-    pc.margin = pc.slop + body_reach_capped (A, world->broad.reach[a], 0)
-                + body_reach_capped (B, world->broad.reach[b], 0);
-  pc.bouncy_swept = ctx->free_flight && reach < 0.0 && swept && pc.restitution > 0.0;
+  pc.bouncy_swept = ctx->free_flight && reach < 0.0 && pc.restitution > 0.0
+                    && body_pair_swept (A, world->broad.reach[a], B, world->broad.reach[b], ctx->dt, ctx->accel,
+                                        ctx->continuous);
   /* clear of the step by the bodies' bounding circles: no narrow phase
    * unless a body of the pair turns out pushed (redetect_deferred) */
   if (pc.bouncy_swept && may_defer && circles_clear_of_step (A, B, pc.slop, ctx->dt))
@@ -874,7 +904,9 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
       defer_pair (world, a, b);
       return;
     }
-  pc.margin_kept = reach >= 0.0 ? pc.margin : pc.slop + world->broad.reach[a] + world->broad.reach[b];
+  pc.ctx = ctx;
+  pc.reach = reach;
+  pc.margins_set = 0;
   pc.reuse_ang = world->def.manifold_tolerance;
   pc.reuse_lin = world->def.manifold_tolerance * (A->shape.size < B->shape.size ? A->shape.size : B->shape.size);
   pc.pieces_a = pc.pieces_b = NULL;
@@ -894,6 +926,7 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
     }
   if (B->shape.kind == CAROM_SHAPE_CIRCLE)
     {
+      pair_margins (world, &pc);
       for (i = 0; i < A->shape.piece_count; ++i)
         {
           const convex_piece *p = &A->shape.pieces[i];
@@ -917,7 +950,7 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
         {
           const convex_piece *q = &B->shape.pieces[j];
           vec2 qc = xform_apply (pc.xb, q->center);
-          if (v2_len (v2_sub (qc, pc_center)) > p->bound_radius + q->bound_radius + pc.margin)
+          if (!pieces_near (world, &pc, v2_len (v2_sub (qc, pc_center)), p->bound_radius + q->bound_radius))
             continue;
           pair_pieces (world, i, j, &pc, &m, pc.reuse_lin > 0.0);
         }
