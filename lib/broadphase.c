@@ -20,6 +20,7 @@ void broadphase_destroy (carom_world *world)
   mem_free (&world->allocator, bp->cell_start, (size_t) bp->cell_cap * sizeof (int32_t));
   mem_free (&world->allocator, bp->cell_items, (size_t) bp->items_cap * sizeof (int32_t));
   mem_free (&world->allocator, bp->cell_fill, (size_t) bp->fill_cap * sizeof (int32_t));
+  mem_free (&world->allocator, bp->cell_ranges, (size_t) bp->ranges_cap * sizeof (int32_t));
   mem_free (&world->allocator, bp->reach, (size_t) bp->reach_cap * sizeof (double));
   mem_free (&world->allocator, bp->hits, (size_t) bp->hits_cap * sizeof (int32_t));
   mem_free (&world->allocator, bp->fat, (size_t) bp->fat_cap * sizeof (fat_box));
@@ -660,10 +661,12 @@ void broadphase_query (carom_world *world, sweep_entry *boxes, int32_t k, const 
  * body. A pair that shares several cells is reported from one only, the
  * cell of the corner (max of the two lows, on both axes), which both cover. */
 
-/* The cell index of coordinate x along an axis of `count` cells. */
+/* The cell index of coordinate x along an axis of `count` cells: the floor
+ * of (x - origin) / size within 0 .. count - 1, which for a quotient from 0
+ * up to count is its truncation (no call to floor). */
 static int32_t grid_cell (double x, double origin, double size, int32_t count)
 {
-  double c = floor ((x - origin) / size);
+  double c = (x - origin) / size;
   return !(c >= 0.0) ? 0 : c >= (double) count ? count - 1 : (int32_t) c;
 }
 
@@ -686,6 +689,29 @@ static cell_range cells_of (const sweep_entry *e, const grid_frame *g)
   return r;
 }
 
+/* The cells entry i covers, as cells_of found them for the grid's final
+ * size (broadphase.cell_ranges, four per entry). */
+static cell_range cells_kept (const broadphase *bp, int32_t i)
+{
+  const int32_t *k = &bp->cell_ranges[4 * i];
+  cell_range r;
+  r.a0 = k[0], r.a1 = k[1], r.b0 = k[2], r.b1 = k[3];
+  return r;
+}
+
+/* fmin and fmax as x86-64's minsd and maxsd compute them (the second
+ * operand when both are zeros), a NaN operand ignored as fmin and fmax
+ * ignore it: the grid's bounds the same bits without a call for each. */
+static inline double min_of (double x, double y)
+{
+  return y != y ? x : x < y ? x : y;
+}
+
+static inline double max_of (double x, double y)
+{
+  return y != y ? x : x > y ? x : y;
+}
+
 int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback fn, void *user)
 {
   broadphase *bp = &world->broad;
@@ -704,10 +730,10 @@ int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback 
   g.u0 = e[0].lo, u1 = e[0].hi, g.v0 = e[0].lo2, v1 = e[0].hi2, g.size = 0.0;
   for (i = 0; i < n; ++i)
     {
-      g.u0 = fmin (g.u0, e[i].lo), u1 = fmax (u1, e[i].hi);
-      g.v0 = fmin (g.v0, e[i].lo2), v1 = fmax (v1, e[i].hi2);
+      g.u0 = min_of (g.u0, e[i].lo), u1 = max_of (u1, e[i].hi);
+      g.v0 = min_of (g.v0, e[i].lo2), v1 = max_of (v1, e[i].hi2);
       if (!e[i].is_static)
-        g.size += fmax (e[i].hi - e[i].lo, e[i].hi2 - e[i].lo2), moving++;
+        g.size += max_of (e[i].hi - e[i].lo, e[i].hi2 - e[i].lo2), moving++;
     }
   if (moving == 0)
     return 1; /* static pairs are never reported */
@@ -718,8 +744,10 @@ int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback 
   /* cells of the mean moving box, but no more than 4 per body */
   g.size /= moving;
   limit = 4.0 * n + 16.0;
+  if (!mem_reserve (&world->allocator, (void **) &bp->cell_ranges, &bp->ranges_cap, 4 * n, sizeof (int32_t)))
+    return 0;
   if (!(g.size > 0.0))
-    g.size = fmax (u1 - g.u0, v1 - g.v0) + 1.0;
+    g.size = max_of (u1 - g.u0, v1 - g.v0) + 1.0;
   /* and no more than 8 cell places per body in all (walls cover many) */
   for (;;)
     {
@@ -731,6 +759,8 @@ int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback 
       for (i = 0; i < n; ++i)
         {
           cell_range r = cells_of (&e[i], &g);
+          int32_t *k = &bp->cell_ranges[4 * i];
+          k[0] = r.a0, k[1] = r.a1, k[2] = r.b0, k[3] = r.b1;
           places += (double) (r.a1 - r.a0 + 1) * (r.b1 - r.b0 + 1);
         }
       if (places <= 2.0 * limit)
@@ -750,7 +780,7 @@ int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback 
   memset (bp->cell_start, 0, (size_t) (cells + 1) * sizeof (int32_t));
   for (i = 0; i < n; ++i)
     {
-      cell_range r = cells_of (&e[i], &g);
+      cell_range r = cells_kept (bp, i);
       int32_t a, b;
       for (b = r.b0; b <= r.b1; ++b)
         for (a = r.a0; a <= r.a1; ++a)
@@ -761,7 +791,7 @@ int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback 
   memcpy (bp->cell_fill, bp->cell_start, (size_t) cells * sizeof (int32_t));
   for (i = 0; i < n; ++i)
     {
-      cell_range r = cells_of (&e[i], &g);
+      cell_range r = cells_kept (bp, i);
       int32_t a, b;
       for (b = r.b0; b <= r.b1; ++b)
         for (a = r.a0; a <= r.a1; ++a)
@@ -787,8 +817,8 @@ int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback 
             {
               const sweep_entry *q = &e[bp->hits[h]];
               /* reported by the cell of the overlap's low corner only */
-              if (grid_cell (fmax (p->lo, q->lo), g.u0, g.size, g.nu)
-                      + g.nu * grid_cell (fmax (p->lo2, q->lo2), g.v0, g.size, g.nv)
+              if (grid_cell (max_of (p->lo, q->lo), g.u0, g.size, g.nu)
+                      + g.nu * grid_cell (max_of (p->lo2, q->lo2), g.v0, g.size, g.nv)
                   != k)
                 continue;
               fn (world, p->slot, q->slot, user);

@@ -65,6 +65,8 @@ typedef struct broadphase {
   int32_t hits_cap;
   int32_t *cell_start, *cell_items, *cell_fill; /* the grid's cells */
   int32_t cell_cap, items_cap, fill_cap;
+  int32_t *cell_ranges; /* the cells each entry covers: 4 per entry */
+  int32_t ranges_cap;
   double *reach;     /* per slot, this detection's body_reach_uncapped
                         (the pairs' margins, contact.c) */
   int32_t reach_cap;
