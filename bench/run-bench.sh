@@ -77,6 +77,16 @@ done
 pick () { grep " engine=$1 scene=$2 " "$RAW/compare.txt" || true; }
 med_ms () { pick "$1" "$2" | while read -r l; do key ms_per_step "$l"; done | median; }
 first () { pick "$1" "$2" | head -n 1; }
+# carom / Box2D v3 in the scaling runs: scale_ratio SCENE BODIES
+scale_ratio () {
+  sc=$(grep "^engine=carom scene=$1 bodies=$2 " "$RAW/scaling.txt" | head -n 1 || true)
+  sb=$(grep "^engine=box2d3 scene=$1 bodies=$2 " "$RAW/scaling.txt" | head -n 1 || true)
+  if [ -n "$sc" ] && [ -n "$sb" ]; then
+    awk -v m="$(key ms_per_step "$sc")" -v b="$(key ms_per_step "$sb")" 'BEGIN { printf "%.2f", m / b }'
+  else
+    echo "-"
+  fi
+}
 
 # ------------------------------------------------------------ carom settings
 : >"$RAW/settings.txt"
@@ -95,8 +105,11 @@ echo "run-bench: settings sweep done" >&2
 
 # ------------------------------------------------------------ scaling
 # Steps are capped so the whole run stays within minutes; the same warm-up
-# (60 steps: the lowest rows of the rain have landed) at every size.
+# (60 steps: the lowest rows of the rain have landed) at every size. Box2D
+# v3, when built, runs the same scene right after carom at each size.
 : >"$RAW/scaling.txt"
+SCALE_ENGINES="carom"
+have bench_box2d3 && SCALE_ENGINES="carom box2d3"
 for s in gas rain; do
   for n in 1000 10000 100000; do
     case $n in
@@ -104,7 +117,9 @@ for s in gas rain; do
     10000) st=120 ;;
     100000) st=60 ;;
     esac
-    run carom scene=$s bodies=$n warmup=60 steps="$st" >>"$RAW/scaling.txt" || true
+    for e in $SCALE_ENGINES; do
+      run "$e" scene=$s bodies=$n warmup=60 steps="$st" >>"$RAW/scaling.txt" || true
+    done
   done
 done
 echo "run-bench: scaling done" >&2
@@ -436,22 +451,31 @@ EOF
   done
   cat <<EOF
 
-## Scaling (carom)
+## Scaling
 
 Warm-up 60 steps, then the timed steps; steps are capped at large sizes to keep
 \`make bench\` within minutes (1k: 240, 10k: 120, 100k: 60 timed steps). The rain
 is then early in its fall (the lowest rows have landed, most bodies are in free
 fall), more so in the bigger scenes (more rows above), so compare per-body costs
-with the contact counts in mind.
+with the contact counts in mind. Box2D v3 (its defaults, as in the tables above)
+runs each scene right after carom, once: one round, not the median of three.
 
-| scene | bodies | timed steps | ms/step | us per body per step | contact points at the end |
-|---|---:|---:|---:|---:|---:|
+| scene | bodies | timed steps | carom ms/step | us per body per step | contact points at the end | Box2D v3 ms/step | carom / Box2D v3 | Box2D v3 contact points |
+|---|---:|---:|---:|---:|---:|---:|---:|---:|
 EOF
-  while read -r l; do
+  grep '^engine=carom ' "$RAW/scaling.txt" | while read -r l; do
+    s=$(key scene "$l")
     n=$(key bodies "$l")
     m=$(key ms_per_step "$l")
-    echo "| $(key scene "$l") | $n | $(key steps "$l") | $m | $(awk -v m="$m" -v n="$n" 'BEGIN { printf "%.3f", 1000 * m / n }') | $(key contacts "$l") |"
-  done <"$RAW/scaling.txt"
+    b=$(grep "^engine=box2d3 scene=$s bodies=$n " "$RAW/scaling.txt" | head -n 1 || true)
+    if [ -n "$b" ]; then
+      bm=$(key ms_per_step "$b")
+      peer="$bm | $(awk -v m="$m" -v b="$bm" 'BEGIN { printf "%.2f", m / b }') | $(key contacts "$b")"
+    else
+      peer="- | - | -"
+    fi
+    echo "| $s | $n | $(key steps "$l") | $m | $(awk -v m="$m" -v n="$n" 'BEGIN { printf "%.3f", 1000 * m / n }') | $(key contacts "$l") | $peer |"
+  done
   cat <<EOF
 
 ## Memory (carom)
@@ -575,7 +599,9 @@ The targets were Box2D v3 at 0.15 ms for the pyramid, 1.3 ms for the rain and
 0.29 ms for the gas, and Chipmunk 7 at 0.39 / 3.6 / 0.16 ms, measured by others
 on this machine. Box2D v3 ran here too (commit \`$(b3v commit)\`): carom / Box2D v3
 is $(ratio "$(med_ms carom pyramid)" "$(med_ms box2d3 pyramid)") on the pyramid, $(ratio "$(med_ms carom rain)" "$(med_ms box2d3 rain)") on the rain and $(ratio "$(med_ms carom gas)" "$(med_ms box2d3 gas)") on the gas
-(> 1: carom is slower; the other engines are in the summary above). Where carom is
+(> 1: carom is slower; the other engines are in the summary above). At 10k
+and 100k bodies (the scaling table, one round) it is $(scale_ratio rain 10000) and $(scale_ratio rain 100000)
+on the rain, $(scale_ratio gas 10000) and $(scale_ratio gas 100000) on the gas. Where carom is
 behind, the profile above shows why:
 EOF
   else
@@ -640,7 +666,13 @@ EOF
   and 322.4M, again to the bit. A time-of-impact search from the start of
   the step takes the detection's own SAT measure of the pieces (their
   separation and its face) instead of measuring them again, to the bit:
-  the gas 293.4M to 289.6M, the rain 3700.2M to 3677.7M (300 steps). Contacts
+  the gas 293.4M to 289.6M, the rain 3700.2M to 3677.7M (300 steps). A
+  pair's margins (the speculative one, three square roots with continuous
+  collision, and the kept one) are computed only when a narrow phase or a
+  bounding-circle test beyond the pieces' radii needs them, which a pair
+  whose manifold is reused does not: the pyramid 157.05M to 152.72M (120
+  steps), the settled rain 855.3M to 835.7M (steps 451 to 510), again to
+  the bit; `tools/compare-bench` gave 0.958 on the pyramid. Contacts
   that keep their set-up while they persist, redoing only what moved, are
   what is planned next.
   Box2D v3 keeps a manifold while the pair moved less than 5 cm plus its
@@ -686,7 +718,13 @@ EOF
   1.90 and 1.86 ms, 1.88 and 1.85. Smaller worlds keep their bodies in
   the caches from one step to the next: the pyramid asks for nothing (its
   instructions 388.01M before and 388.62M after over 300 steps, the rise
-  the copying of the pairs' slots; asking there too, 394.2M).
+  the copying of the pairs' slots; asking there too, 394.2M). The
+  batches' own size is not what the passes wait on: the settled rain's
+  batches take 1.03 MB (943 of them, 624 of one-point lanes), about this
+  processor's second-level cache, yet batches made 128 bytes larger by a
+  padding (12% more bytes) timed the same (`tools/compare-bench`, 16
+  pairs: 1.006, the fastest runs 2.063 and 2.067 ms): the passes read
+  them in order, which the processor fetches ahead.
   Branches that the data decide cost as much: cachegrind's branch
   simulation (`valgrind --tool=cachegrind --branch-sim=yes` on
   `bench_carom scene=rain warmup=0 steps=300`) counted 88k mispredicted
@@ -704,7 +742,14 @@ EOF
 - **The broad phase** is a sort and sweep below 4096 bodies and a uniform
   grid above (the sweep's strip tests grow as n sqrt(n) in crowded worlds:
   the gas at 100k bodies went from 65 to 42 ms per step with the grid, one
-  run of `bench_carom scene=gas bodies=100000 steps=60` each). What
+  run of `bench_carom scene=gas bodies=100000 steps=60` each). The grid
+  finds each box's cells once a detection (it found them three times:
+  sizing the grid, counting, placing), truncates instead of calling floor
+  and compares instead of calling fmin and fmax, to the bit: callgrind
+  over steps 61 to 80 took the rain at 10k bodies from 532.8M to 448.1M
+  instructions and the gas from 570.8M to 488.7M; in time (`tools/compare-bench`,
+  8 pairs) the gas 10k 0.887, the rain 10k 1.016: what the rain's step
+  waits on at 10k bodies is not those instructions. What
   remains of the growth per body in the scaling table is memory: at 100k
   bodies the world no longer fits in the caches. Below 4096 bodies it
   keeps the pairs of overlapping fat boxes (each body's box grown by a
