@@ -816,10 +816,12 @@ int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback 
           for (h = 0; h < hits; ++h)
             {
               const sweep_entry *q = &e[bp->hits[h]];
-              /* reported by the cell of the overlap's low corner only */
-              if (grid_cell (max_of (p->lo, q->lo), g.u0, g.size, g.nu)
-                      + g.nu * grid_cell (max_of (p->lo2, q->lo2), g.v0, g.size, g.nv)
-                  != k)
+              /* reported by the cell of the overlap's low corner only:
+               * grid_cell never decreases as its coordinate grows, so the
+               * corner's cell is the larger of the two boxes' first cells
+               * on each axis (no division) */
+              cell_range rp = cells_kept (bp, bp->cell_items[i]), rq = cells_kept (bp, bp->hits[h]);
+              if ((rp.a0 > rq.a0 ? rp.a0 : rq.a0) + g.nu * (rp.b0 > rq.b0 ? rp.b0 : rq.b0) != k)
                 continue;
               fn (world, p->slot, q->slot, user);
             }
