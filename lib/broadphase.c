@@ -405,6 +405,21 @@ static void prefetch_pairs_ahead (const carom_world *world, const int32_t *sa, c
     }
 }
 
+/* Report the n pairs of slots sa[k], sb[k] in order, the bodies of those
+ * ahead asked of the memory in worlds of PREFETCH_MIN_BODIES or more. */
+static void report_pairs (carom_world *world, const int32_t *sa, const int32_t *sb, int32_t n, pair_callback fn,
+                          void *user)
+{
+  int ahead = world->live_count >= PREFETCH_MIN_BODIES;
+  int32_t k;
+  for (k = 0; k < n; ++k)
+    {
+      if (ahead)
+        prefetch_pairs_ahead (world, sa, sb, k, n);
+      fn (world, sa[k], sb[k], user);
+    }
+}
+
 /* Report the kept pairs whose boxes meet, in the order they were kept. The
  * meetings of a chunk are noted without a branch (whether two fat boxes'
  * boxes meet is not predictable), then reported. */
@@ -412,7 +427,6 @@ static void report_kept (carom_world *world, pair_callback fn, void *user)
 {
   broadphase *bp = &world->broad;
   int32_t i, k, met[REPORT_CHUNK], sa[REPORT_CHUNK], sb[REPORT_CHUNK];
-  int ahead = world->live_count >= PREFETCH_MIN_BODIES;
   for (i = 0; i < bp->pair_count; i += 2 * REPORT_CHUNK)
     {
       int32_t end = i + 2 * REPORT_CHUNK < bp->pair_count ? i + 2 * REPORT_CHUNK : bp->pair_count, hits = 0;
@@ -427,12 +441,7 @@ static void report_kept (carom_world *world, pair_callback fn, void *user)
           sa[k] = bp->entries[bp->pairs[met[k]]].slot;
           sb[k] = bp->entries[bp->pairs[met[k] + 1]].slot;
         }
-      for (k = 0; k < hits; ++k)
-        {
-          if (ahead)
-            prefetch_pairs_ahead (world, sa, sb, k, hits);
-          fn (world, sa[k], sb[k], user);
-        }
+      report_pairs (world, sa, sb, hits, fn, user);
     }
 }
 
@@ -718,7 +727,7 @@ int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback 
   const sweep_entry *e;
   grid_frame g;
   double u1, v1, limit;
-  int32_t n, i, j, k, cells, total, moving = 0;
+  int32_t n, i, j, k, cells, total, moving = 0, sa[REPORT_CHUNK], sb[REPORT_CHUNK], found = 0;
   if (!reserve_entries (world))
     return 0;
   n = bp->count = fill_all (world, ctx);
@@ -798,6 +807,9 @@ int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback 
           bp->cell_items[bp->cell_fill[b * g.nu + a]++] = i;
     }
 
+  /* the pairs found are reported REPORT_CHUNK at a time, in the order
+   * found: the cells' bodies come in no order of their slots, and a world
+   * this large does not keep them in the caches (report_pairs) */
   for (k = 0; k < cells; ++k)
     {
       int32_t first = bp->cell_start[k], last = bp->cell_start[k + 1];
@@ -823,10 +835,16 @@ int broadphase_grid (carom_world *world, const step_context *ctx, pair_callback 
               cell_range rp = cells_kept (bp, bp->cell_items[i]), rq = cells_kept (bp, bp->hits[h]);
               if ((rp.a0 > rq.a0 ? rp.a0 : rq.a0) + g.nu * (rp.b0 > rq.b0 ? rp.b0 : rq.b0) != k)
                 continue;
-              fn (world, p->slot, q->slot, user);
+              sa[found] = p->slot, sb[found] = q->slot;
+              if (++found == REPORT_CHUNK)
+                {
+                  report_pairs (world, sa, sb, found, fn, user);
+                  found = 0;
+                }
             }
         }
     }
+  report_pairs (world, sa, sb, found, fn, user);
   return 1;
 }
 
