@@ -769,7 +769,6 @@ static void on_compound_pair (carom_world *world, pair_context *pc)
   int32_t na = body_pieces (A, &P, &ca), nb = body_pieces (B, &Q, &cb), i, j;
   int compound_a = A->shape.kind == CAROM_SHAPE_COMPOUND, compound_b = B->shape.kind == CAROM_SHAPE_COMPOUND;
   manifold m;
-  pair_margins (world, pc);
   pc->pieces_a = P;
   pc->pieces_b = Q;
   for (i = 0; i < na; ++i)
@@ -780,7 +779,7 @@ static void on_compound_pair (carom_world *world, pair_context *pc)
       for (j = 0; j < nb; ++j)
         {
           vec2 qc = xform_apply (xb, Q[j].center);
-          if (v2_len (v2_sub (qc, pc_center)) > P[i].bound_radius + Q[j].bound_radius + pc->margin)
+          if (!pieces_near (world, pc, v2_len (v2_sub (qc, pc_center)), P[i].bound_radius + Q[j].bound_radius))
             continue;
           mix_materials (world, ea, fa, compound_b ? material (Q[j].restitution, B->restitution) : B->restitution,
                          compound_b ? material (Q[j].friction, B->friction) : B->friction, pc);
@@ -926,12 +925,11 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
     }
   if (B->shape.kind == CAROM_SHAPE_CIRCLE)
     {
-      pair_margins (world, &pc);
       for (i = 0; i < A->shape.piece_count; ++i)
         {
           const convex_piece *p = &A->shape.pieces[i];
           vec2 c = xform_apply (pc.xa, p->center);
-          if (v2_len (v2_sub (B->p, c)) > p->bound_radius + B->shape.radius + pc.margin)
+          if (!pieces_near (world, &pc, v2_len (v2_sub (B->p, c)), p->bound_radius + B->shape.radius))
             continue;
           pair_pieces (world, i, -1, &pc, &m, 0);
         }
