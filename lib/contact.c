@@ -238,7 +238,9 @@ static int reuse_contact (carom_world *world, int32_t pa, int32_t pb, const pair
   contact *k;
   turn.c = then.q.c * now.q.c + then.q.s * now.q.s; /* now / then */
   turn.s = then.q.c * now.q.s - then.q.s * now.q.c;
-  if (!(v2_len (v2_sub (now.p, then.p)) <= pc->reuse_lin && fabs (turn.s) <= pc->reuse_ang && turn.c > 0.0))
+  vec2 moved = v2_sub (now.p, then.p);
+  if (!((v2_len_surely_within (moved, pc->reuse_lin) || v2_len (moved) <= pc->reuse_lin)
+        && fabs (turn.s) <= pc->reuse_ang && turn.c > 0.0))
     return 0;
   k = new_contact (world, pa, pb, pc, old, o->count, INFINITY, 0);
   if (!k)
@@ -502,11 +504,16 @@ static void pair_margins (const carom_world *world, pair_context *pc)
   pc->margin_kept = pc->reach >= 0.0 ? pc->margin : pc->slop + ra + rb;
 }
 
-/* Whether the bounding circles of two pieces, r apart (their radii's sum
- * rr), come within the pair's margin: at once when they overlap, for which
- * the margin (never negative) is not needed. */
-static int pieces_near (const carom_world *world, pair_context *pc, double r, double rr)
+/* Whether the bounding circles of two pieces, d from one centre to the
+ * other (their radii's sum rr), come within the pair's margin: at once when
+ * they overlap, for which the margin (never negative) is not needed, and
+ * without a square root when they clearly do. */
+static int pieces_near (const carom_world *world, pair_context *pc, vec2 d, double rr)
 {
+  double r;
+  if (v2_len_surely_within (d, rr))
+    return 1;
+  r = v2_len (d);
   if (!(r > rr))
     return 1;
   pair_margins (world, pc);
@@ -752,6 +759,14 @@ static inline void mix_materials (const carom_world *world, double ea, double fa
   fa = material (fa, world->def.friction);
   fb = material (fb, world->def.friction);
   pc->restitution = ea > eb ? ea : eb;
+  /* two equal frictions (most pairs) mix to that friction: the square root
+   * of a square is exact in binary floating point, while the square stays
+   * a normal double */
+  if (fa == fb && fa >= 0x1p-500 && fa <= 0x1p500)
+    {
+      pc->friction = fa;
+      return;
+    }
   pc->friction = sqrt (fa * fb);
   if (!isfinite (pc->friction))
     pc->friction = sqrt (fa) * sqrt (fb); /* mu near the largest double: finite, so mu times 0 is 0 */
@@ -779,7 +794,7 @@ static void on_compound_pair (carom_world *world, pair_context *pc)
       for (j = 0; j < nb; ++j)
         {
           vec2 qc = xform_apply (xb, Q[j].center);
-          if (!pieces_near (world, pc, v2_len (v2_sub (qc, pc_center)), P[i].bound_radius + Q[j].bound_radius))
+          if (!pieces_near (world, pc, v2_sub (qc, pc_center), P[i].bound_radius + Q[j].bound_radius))
             continue;
           mix_materials (world, ea, fa, compound_b ? material (Q[j].restitution, B->restitution) : B->restitution,
                          compound_b ? material (Q[j].friction, B->friction) : B->friction, pc);
@@ -929,7 +944,7 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
         {
           const convex_piece *p = &A->shape.pieces[i];
           vec2 c = xform_apply (pc.xa, p->center);
-          if (!pieces_near (world, &pc, v2_len (v2_sub (B->p, c)), p->bound_radius + B->shape.radius))
+          if (!pieces_near (world, &pc, v2_sub (B->p, c), p->bound_radius + B->shape.radius))
             continue;
           pair_pieces (world, i, -1, &pc, &m, 0);
         }
@@ -948,7 +963,7 @@ static void detect_pair (carom_world *world, int32_t a, int32_t b, const step_co
         {
           const convex_piece *q = &B->shape.pieces[j];
           vec2 qc = xform_apply (pc.xb, q->center);
-          if (!pieces_near (world, &pc, v2_len (v2_sub (qc, pc_center)), p->bound_radius + q->bound_radius))
+          if (!pieces_near (world, &pc, v2_sub (qc, pc_center), p->bound_radius + q->bound_radius))
             continue;
           pair_pieces (world, i, j, &pc, &m, pc.reuse_lin > 0.0);
         }

@@ -2,6 +2,7 @@
 #ifndef CAROM_VEC2_H
 #define CAROM_VEC2_H
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -68,6 +69,17 @@ static inline vec2 v2_cross_sv (double w, vec2 r) { return v2 (-w * r.y, w * r.x
 static inline vec2 v2_perp (vec2 a) { return v2 (-a.y, a.x); }
 static inline double v2_len2 (vec2 a) { return v2_dot (a, a); }
 static inline double v2_len (vec2 a) { return sqrt (v2_dot (a, a)); }
+/* Whether sqrt (a . a) <= r surely holds, found without the square root: a
+ * . a below r^2 by more than the rounding of both (four units in the last
+ * place) makes the root below r, and rounding it to r's format cannot take
+ * it past r. 0 says nothing: the caller takes the root. r^2 must be a
+ * normal double (below, its rounding is coarser; an infinite a . a fails
+ * the strict test). */
+static inline int v2_len_surely_within (vec2 a, double r)
+{
+  double r2 = r * r * (1.0 - 0x1p-50);
+  return r2 > DBL_MIN && v2_dot (a, a) < r2;
+}
 static inline vec2 v2_mad (vec2 a, double s, vec2 b) { return v2 (a.x + s * b.x, a.y + s * b.y); }
 static inline vec2 v2_lerp (vec2 a, vec2 b, double t) { return v2 (a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)); }
 static inline vec2 v2_min (vec2 a, vec2 b) { return v2 (a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y); }
