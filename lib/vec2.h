@@ -2,7 +2,6 @@
 #ifndef CAROM_VEC2_H
 #define CAROM_VEC2_H
 
-#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -72,13 +71,13 @@ static inline double v2_len (vec2 a) { return sqrt (v2_dot (a, a)); }
 /* Whether sqrt (a . a) <= r surely holds, found without the square root: a
  * . a below r^2 by more than the rounding of both (four units in the last
  * place) makes the root below r, and rounding it to r's format cannot take
- * it past r. 0 says nothing: the caller takes the root. r^2 must be a
- * normal double (below, its rounding is coarser; an infinite a . a fails
- * the strict test). */
+ * it past r. Where r^2 is subnormal the squares fall on the same coarse
+ * grid, and one a whole step below r^2's is below r^2; where r^2
+ * overflows, any finite a . a is below it (an infinite one fails the
+ * strict test). 0 says nothing: the caller takes the root. */
 static inline int v2_len_surely_within (vec2 a, double r)
 {
-  double r2 = r * r * (1.0 - 0x1p-50);
-  return r2 > DBL_MIN && v2_dot (a, a) < r2;
+  return r > 0.0 && v2_dot (a, a) < r * r * (1.0 - 0x1p-50);
 }
 static inline vec2 v2_mad (vec2 a, double s, vec2 b) { return v2 (a.x + s * b.x, a.y + s * b.y); }
 static inline vec2 v2_lerp (vec2 a, vec2 b, double t) { return v2 (a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)); }

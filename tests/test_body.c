@@ -369,6 +369,53 @@ static void test_rotation_of_an_angle (void **state)
                  (int) (20000 * (sizeof spans / sizeof spans[0])));
 }
 
+/* v2_len_surely_within, which detection asks before it takes a square
+ * root: whenever it answers, sqrt (d . d) <= r holds (the comparison it
+ * stands for decides the same), over lengths from tiny to huge, near the
+ * bound on both sides to the last place, where r^2 is subnormal or
+ * overflows, and for infinities, NaNs and a negative r; and it answers
+ * for every length clearly below r whose square is a number and not 0, or
+ * it would save nothing. */
+static void test_length_within_without_a_root (void **state)
+{
+  static const double scales[] = { 1e-300, 1e-160, 1.5e-154, 1e-150, 1e-8, 1.0, 3.0, 1e8, 1e150, 1.3e154, 1e160 };
+  uint64_t x = 0x2545F4914F6CDD1Dull;
+  int answered = 0, clear = 0;
+  size_t i;
+  int k;
+  (void) state;
+  for (i = 0; i < sizeof scales / sizeof scales[0]; ++i)
+    for (k = 0; k < 20000; ++k)
+      {
+        double r, t, f;
+        vec2 d;
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+        r = scales[i] * (1.0 + (double) (x >> 11) / 9007199254740992.0);
+        t = 2.0 * CAROM_PI * (double) (x & 0xffff) / 65536.0;
+        /* the length: a fraction of r, or r itself moved by a few units
+         * in its last place either way */
+        f = k % 2 ? (double) ((x >> 20) & 0xfff) / 4096.0 : 1.0 + (double) ((int) ((x >> 40) & 15) - 8) * 0x1p-52;
+        d = v2 (f * r * cos (t), f * r * sin (t));
+        if (v2_len_surely_within (d, r))
+          {
+            ++answered;
+            if (!(sqrt (v2_dot (d, d)) <= r))
+              fail_msg ("(%.17g, %.17g) within %.17g without a root, %.17g with it", d.x, d.y, r, v2_len (d));
+          }
+        else if (k % 2 && f < 0.99 && r * r * 0.99 > 0.0 && isfinite (v2_dot (d, d)))
+          fail_msg ("(%.17g, %.17g) clearly within %.17g, not answered", d.x, d.y, r);
+        clear += k % 2 && f < 0.99;
+      }
+  assert_false (v2_len_surely_within (v2 (NAN, 0.0), 1.0));
+  assert_false (v2_len_surely_within (v2 (INFINITY, 0.0), 1e200));
+  assert_false (v2_len_surely_within (v2 (0.0, 0.0), NAN));
+  assert_false (v2_len_surely_within (v2 (0.0, 0.0), 0.0));
+  assert_false (v2_len_surely_within (v2 (1.0, 0.0), 1.0));
+  assert_false (v2_len_surely_within (v2 (0.0, 0.0), -1.0));
+  print_message ("length within without a root: answered %d of %d lengths, %d of them clearly within\n", answered,
+                 (int) (20000 * (sizeof scales / sizeof scales[0])), clear);
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
@@ -387,6 +434,7 @@ int main (void)
     cmocka_unit_test_setup_teardown (test_stale_ids, world_setup, world_teardown),
     cmocka_unit_test_setup_teardown (test_setters_refuse_non_finite, world_setup, world_teardown),
     cmocka_unit_test (test_rotation_of_an_angle),
+    cmocka_unit_test (test_length_within_without_a_root),
   };
   return cmocka_run_group_tests_name ("body", tests, NULL, NULL);
 }
