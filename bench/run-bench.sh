@@ -672,9 +672,19 @@ EOF
   bounding-circle test beyond the pieces' radii needs them, which a pair
   whose manifold is reused does not: the pyramid 157.05M to 152.72M (120
   steps), the settled rain 855.3M to 835.7M (steps 451 to 510), again to
-  the bit; `tools/compare-bench` gave 0.958 on the pyramid. Contacts
-  that keep their set-up while they persist, redoing only what moved, are
-  what is planned next.
+  the bit; `tools/compare-bench` gave 0.958 on the pyramid. Sampled in
+  time, a quarter of the pyramid's detect_pair waited on three square
+  roots a pair: the distance of the pieces' centres, that of the pair's
+  motion since its manifold was computed, and the mix of two frictions.
+  The first two are now compared squared where that decides
+  (vec2.h's v2_len_surely_within, tested against the root to the last
+  place), the root taken only within a rounding of the bound, and two
+  equal frictions mix to themselves (the root of a square is exact): to
+  the bit, the pyramid 152.81M to 152.34M instructions (120 steps), but
+  `tools/compare-bench` 0.975 (16 pairs; the fastest runs 0.1179 and
+  0.1170 ms): a root's latency, not its instruction, is what the pair
+  waited on. Contacts that keep their set-up while they persist, redoing
+  only what moved, are what is planned next.
   Box2D v3 keeps a manifold while the pair moved less than 5 cm plus its
   extent times the sine of the turn, and turned less than 11 degrees;
   carom's default keeps it within 1% of the smaller body's size and 0.01
@@ -739,6 +749,24 @@ EOF
   one-point contacts solves one point, not two (contact_batch.points);
   small functions of the per-contact loops whose vector arguments went
   through the stack (a store-forwarding stall at every call) are inlined.
+  Counted over the same steps (callgrind started after the warm-up, a
+  scratch copy of each bench), carom executes 1.35 times Box2D v3's
+  instructions while the rain lands (steps 181 to 240: 1116M against
+  828M) and 1.21 times once it has settled (steps 451 to 510: 834M against
+  690M), but takes about 2.2 and 1.9 times its time: per instruction it
+  is 1.6 times slower. Tried for that and not kept, each with the same
+  bits: the set-up's four divisions a point as two two-lane divisions
+  (1.5% more instructions, no change in time: the divisions are not what
+  it waits on); asking for each contact and its points six places ahead
+  of the packing, which visits them in colour order (no change); the
+  shock rows ordered in waves, each row after every earlier one that
+  shares a body it moves (1807 rows in 28 waves in the settled rain), so
+  that the rows next to each other do not wait on each other, with and
+  without a branch-free row (no change, and 8% slower without branches);
+  a point's fields ordered so that a reused manifold reads two of last
+  step's point's five cache lines (the simulated last level's read misses
+  9.5% fewer, yet 3% to 6% slower in time); and, at 10k bodies, asking
+  for each body's vertices four bodies ahead of its box (no change).
 - **The broad phase** is a sort and sweep below 4096 bodies and a uniform
   grid above (the sweep's strip tests grow as n sqrt(n) in crowded worlds:
   the gas at 100k bodies went from 65 to 42 ms per step with the grid, one
