@@ -234,11 +234,11 @@ static int reuse_contact (carom_world *world, int32_t pa, int32_t pb, const pair
 {
   const contact *o = &world->contacts.old[old];
   xform xa = pc->xa, now = xform_relative (xa, pc->xb), then = o->computed_at;
+  vec2 moved = v2_sub (now.p, then.p);
   rot2 turn;
   contact *k;
   turn.c = then.q.c * now.q.c + then.q.s * now.q.s; /* now / then */
   turn.s = then.q.c * now.q.s - then.q.s * now.q.c;
-  vec2 moved = v2_sub (now.p, then.p);
   if (!((v2_len_surely_within (moved, pc->reuse_lin) || v2_len (moved) <= pc->reuse_lin)
         && fabs (turn.s) <= pc->reuse_ang && turn.c > 0.0))
     return 0;
