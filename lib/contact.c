@@ -239,8 +239,7 @@ static int reuse_contact (carom_world *world, int32_t pa, int32_t pb, const pair
   contact *k;
   turn.c = then.q.c * now.q.c + then.q.s * now.q.s; /* now / then */
   turn.s = then.q.c * now.q.s - then.q.s * now.q.c;
-  if (!((v2_len_surely_within (moved, pc->reuse_lin) || v2_len (moved) <= pc->reuse_lin)
-        && fabs (turn.s) <= pc->reuse_ang && turn.c > 0.0))
+  if (!(v2_len_at_most (moved, pc->reuse_lin) && fabs (turn.s) <= pc->reuse_ang && turn.c > 0.0))
     return 0;
   k = new_contact (world, pa, pb, pc, old, o->count, INFINITY, 0);
   if (!k)

@@ -79,6 +79,12 @@ static inline int v2_len_surely_within (vec2 a, double r)
 {
   return r > 0.0 && v2_dot (a, a) < r * r * (1.0 - 0x1p-50);
 }
+/* sqrt (a . a) <= r, the same answer, the root taken only where the
+ * squares cannot give it. */
+static inline int v2_len_at_most (vec2 a, double r)
+{
+  return v2_len_surely_within (a, r) || v2_len (a) <= r;
+}
 static inline vec2 v2_mad (vec2 a, double s, vec2 b) { return v2 (a.x + s * b.x, a.y + s * b.y); }
 static inline vec2 v2_lerp (vec2 a, vec2 b, double t) { return v2 (a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)); }
 static inline vec2 v2_min (vec2 a, vec2 b) { return v2 (a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y); }

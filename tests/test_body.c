@@ -370,7 +370,8 @@ static void test_rotation_of_an_angle (void **state)
 }
 
 /* v2_len_surely_within, which detection asks before it takes a square
- * root: whenever it answers, sqrt (d . d) <= r holds (the comparison it
+ * root (and v2_len_at_most, which then takes it if need be, always the
+ * root's answer): whenever it answers, sqrt (d . d) <= r holds (the comparison it
  * stands for decides the same), over lengths from tiny to huge, near the
  * bound on both sides to the last place, where r^2 is subnormal or
  * overflows, and for infinities, NaNs and a negative r; and it answers
@@ -396,6 +397,8 @@ static void test_length_within_without_a_root (void **state)
          * in its last place either way */
         f = k % 2 ? (double) ((x >> 20) & 0xfff) / 4096.0 : 1.0 + (double) ((int) ((x >> 40) & 15) - 8) * 0x1p-52;
         d = v2 (f * r * cos (t), f * r * sin (t));
+        if (v2_len_at_most (d, r) != (sqrt (v2_dot (d, d)) <= r))
+          fail_msg ("(%.17g, %.17g) at most %.17g: not the root's answer", d.x, d.y, r);
         if (v2_len_surely_within (d, r))
           {
             ++answered;
