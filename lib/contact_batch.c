@@ -147,6 +147,14 @@ static void pack_lane (contact_batch *restrict c, int lane, const contact *restr
     pack_point_empty (&c->two.p1, lane);
 }
 
+/* Batch number `index` of the step's, `twos` of those before it of
+ * two-point lanes (the rest of one-point lanes, CONTACT_BATCH_SIZE). */
+static contact_batch *batch_at (contact_batch *batches, int32_t index, int32_t twos)
+{
+  return (contact_batch *) ((char *) batches + (size_t) index * CONTACT_BATCH_SIZE (1)
+                            + (size_t) twos * (CONTACT_BATCH_SIZE (2) - CONTACT_BATCH_SIZE (1)));
+}
+
 /* The key a contact is packed by: its colour's two-point contacts, then its
  * one-point ones. */
 static int32_t pack_key (const contact *k, int32_t colour)
@@ -217,41 +225,42 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
       colour_contact (ct, apart[k], 1, sb[ct->a].moves == MOVES_DYNAMIC, sb[ct->b].moves == MOVES_DYNAMIC, used,
                       keys, end);
     }
-  /* each colour's contacts, two-point ones first, each kind in list order
-   * (a counting sort), four to a batch */
-  for (i = 0; i < 4 * CONSTRAINT_COLOURS; ++i)
-    end[i + 1] += end[i];
-  for (i = 0; i < c->count; ++i)
-    if (keys[i] >= 0)
-      order[end[keys[i]]++] = i;
-  for (k = 0, i = 0; k < 2 * CONSTRAINT_COLOURS; ++k)
-    {
-      int lane = 0, points = 0;
-      for (; i < end[2 * k + 1]; ++i)
+  /* Where each contact goes: a colour's batches hold its two-point
+   * contacts, then its one-point ones, each kind in list order, four to a
+   * batch, the colour's first at a batch of its own. Place p is lane p % 4
+   * of batch p / 4; `end` becomes each kind's next place, and `order` (free
+   * until the rest are listed below) tells each batch where it lies. The
+   * contacts are then packed in list order, read one after the other as
+   * their set-up left them: packed in the colours' order, the reads
+   * jumped through the list and waited on memory (docs/performance.md). */
+  {
+    int32_t place = 0, twos = 0;
+    for (k = 0; k < 2 * CONSTRAINT_COLOURS; ++k)
+      {
+        int32_t two = end[2 * k + 1], lanes = two + end[2 * k + 2], first = place / BATCH_LANES, j, lane;
+        end[2 * k + 1] = place;
+        end[2 * k + 2] = place + two;
+        for (j = 0; j * BATCH_LANES < lanes; ++j)
+          {
+            int points = j * BATCH_LANES < two ? 2 : 1;
+            order[first + j] = twos;
+            twos += points == 2;
+            batch->points = points;
+            for (lane = lanes - j * BATCH_LANES; lane < BATCH_LANES; ++lane)
+              pack_empty_lane (batch, lane, world->slot_count, points);
+            batch = batch_next (batch);
+            ++n;
+          }
+        place += (lanes + BATCH_LANES - 1) / BATCH_LANES * BATCH_LANES;
+      }
+    for (i = 0; i < c->count; ++i)
+      if (keys[i] >= 0)
         {
-          const contact *ct = &c->list[order[i]];
-          /* two-point contacts come first: the first lane's count is
-           * the batch's */
-          if (lane == 0)
-            points = ct->count;
-          pack_lane (batch, lane, ct, order[i], sb, points);
-          if (++lane == BATCH_LANES)
-            {
-              batch->points = points;
-              batch = batch_next (batch);
-              ++n;
-              lane = 0;
-            }
+          int32_t at = end[keys[i] + 1]++;
+          contact_batch *to = batch_at (world->batches, at / BATCH_LANES, order[at / BATCH_LANES]);
+          pack_lane (to, at % BATCH_LANES, &c->list[i], i, sb, to->points);
         }
-      if (lane > 0)
-        {
-          for (; lane < BATCH_LANES; ++lane)
-            pack_empty_lane (batch, lane, world->slot_count, points);
-          batch->points = points;
-          batch = batch_next (batch);
-          ++n;
-        }
-    }
+  }
   world->batch_count = n;
   /* the rest, in list order, for contact_solver.c's passes (in the room
    * the keys took, each read before it is written over), and the fine ones
