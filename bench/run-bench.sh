@@ -767,6 +767,46 @@ EOF
   step's point's five cache lines (the simulated last level's read misses
   9.5% fewer, yet 3% to 6% slower in time); and, at 10k bodies, asking
   for each body's vertices four bodies ahead of its box (no change).
+  Where the time per instruction goes, counted: callgrind's cache
+  simulation (`--cache-sim=yes --D1=32768,8,64 --LL=2097152,16,64`,
+  started after the warm-up in the scratch copies of both benches, the
+  settled rain's steps 451 to 510) gives carom 9.40M read misses and
+  5.53M write misses at the last level, Box2D v3 1.90M and 0.80M: 4.9 and
+  6.9 times as many, for 1.21 times the instructions (first level: 44.1M
+  and 6.4M against 20.6M and 1.6M). carom's come from its contacts: the
+  detection writing this step's list while it reads last step's
+  (pair_pieces 1.62M and 2.07M), the set-up, by when the points the
+  detection wrote have left the last level (contact_prepare_from 1.40M
+  and 1.01M, contact_batch_prepare 1.53M and 1.06M), the warm start's
+  first walk over the batches (0.68M), the events (0.58M) and the shock
+  rows (0.37M and 0.37M); Box2D v3's from its collide task (0.63M and
+  0.08M), its prepare (0.54M and 0.56M) and its bodies. A contact and its
+  points take about 640 bytes in each of the two lists (last step's and
+  this one's), and its batch lane 200 to 400 more: per contact carom
+  streams about four times Box2D v3's bytes a step. Yet the bytes a
+  step streams in order are not what it waits on: a point made 64 bytes
+  larger (280 to 344, by a padding), and the same with the set-up
+  writing those 64 bytes of every point each step, timed the same
+  (`tools/compare-bench`, 12 pairs, settled rain: 1.004 and 0.999), so
+  splitting a point into what the passes read and what the impacts keep
+  would not pay for itself. What it waits on are reads the processor
+  cannot foresee (a body, a piece, a contact reached through an index)
+  and branches the data decide: callgrind's branch simulation over the
+  same steps counts 57k mispredicted branches a step, 17k of them in the
+  shock rows' passes (whether a row needs an impulse, 7.2k; the switch
+  over a row's kind, 6.7k), 7.7k in the detection, 5k in the levels'
+  walk.
+  Since, the packing reads the contacts in list order, as the set-up
+  left them, and writes each into the lane its colour gives it (the
+  batches the same to the byte): it had read them in the colours' order,
+  all over the list, and waited on those reads (`perf record`, settled
+  rain, `warmup=450 steps=600`, two runs each: contact_batch_prepare
+  9.05% and 6.79% of the samples before, 5.66% and 5.63% after;
+  `tools/compare-bench`, 16 pairs: 0.942 and 1.011 settled, 0.965 and
+  0.999 over the bench's steps, the pyramid 1.005). The same for the
+  shock rows (their contacts read in list order, each row written at its
+  place in the level order) took contact_shock_prepare from 5.2% and
+  5.5% of the samples to 6.9% and 7.2%: not kept.
 - **The broad phase** is a sort and sweep below 4096 bodies and a uniform
   grid above (the sweep's strip tests grow as n sqrt(n) in crowded worlds:
   the gas at 100k bodies went from 65 to 42 ms per step with the grid, one
