@@ -806,7 +806,19 @@ EOF
   0.999 over the bench's steps, the pyramid 1.005). The same for the
   shock rows (their contacts read in list order, each row written at its
   place in the level order) took contact_shock_prepare from 5.2% and
-  5.5% of the samples to 6.9% and 7.2%: not kept.
+  5.5% of the samples to 6.9% and 7.2%: not kept. The shock rows' own
+  pass (a tenth of the settled rain's samples) is not waiting on memory
+  or on its branches: the rows put in waves (each after every earlier
+  row that writes a body it reads or writes, or reads one it writes: the
+  same bits) with a wave's faces before its one-point rows, so that the
+  switch over a row's kind no longer goes one way or the other at
+  random, left its share where it was (10.7% and 10.9% of the samples,
+  `tools/compare-bench` 0.997); and a second copy of the pass, run just
+  before it on the same rows but pushing a dummy body, took 9.3% of the
+  samples against the pass's 10.0%, which then ran on what the copy had
+  brought into the caches. At about 40 cycles a row and 14.5k rows a
+  step, it is the work itself: four rows at once, in waves, on the
+  batches' lanes, is what is planned for it.
 - **The broad phase** is a sort and sweep below 4096 bodies and a uniform
   grid above (the sweep's strip tests grow as n sqrt(n) in crowded worlds:
   the gas at 100k bodies went from 65 to 42 ms per step with the grid, one
