@@ -188,7 +188,6 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
    * `order` has until the counting sort */
   int32_t *apart = order, apart_count = 0;
   int32_t i, k, n = 0, fine_count = 0, fine_passes = 0;
-  contact_batch *batch = world->batches;
   (void) ctx;
   for (i = 0; i <= 4 * CONSTRAINT_COLOURS; ++i)
     end[i] = 0;
@@ -243,12 +242,12 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
         for (j = 0; j * BATCH_LANES < lanes; ++j)
           {
             int points = j * BATCH_LANES < two ? 2 : 1;
+            contact_batch *batch = batch_at (world->batches, first + j, twos);
             order[first + j] = twos;
             twos += points == 2;
             batch->points = points;
             for (lane = lanes - j * BATCH_LANES; lane < BATCH_LANES; ++lane)
               pack_empty_lane (batch, lane, world->slot_count, points);
-            batch = batch_next (batch);
             ++n;
           }
         place += (lanes + BATCH_LANES - 1) / BATCH_LANES * BATCH_LANES;
