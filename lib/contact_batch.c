@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "contact_solver.h"
+#include "shock_batch.h"
 #include "world.h"
 
 /* ------------------------------------------------------------ colouring */
@@ -398,12 +399,14 @@ static inline wide w_set1 (double d) { wide r; LANEWISE (d); }
 static inline wide w_add (wide a, wide b) { wide r; LANEWISE (a.l[i] + b.l[i]); }
 static inline wide w_sub (wide a, wide b) { wide r; LANEWISE (a.l[i] - b.l[i]); }
 static inline wide w_mul (wide a, wide b) { wide r; LANEWISE (a.l[i] * b.l[i]); }
+static inline wide w_div (wide a, wide b) { wide r; LANEWISE (a.l[i] / b.l[i]); }
 static inline wide w_neg (wide a) { wide r; LANEWISE (-a.l[i]); }
 static inline wide w_max (wide a, wide b) { wide r; LANEWISE (a.l[i] > b.l[i] ? a.l[i] : b.l[i]); }
 static inline wide w_min (wide a, wide b) { wide r; LANEWISE (a.l[i] < b.l[i] ? a.l[i] : b.l[i]); }
 static inline wmask m_gt (wide a, wide b) { wmask r; LANEWISE (a.l[i] > b.l[i]); }
 static inline wmask m_ge (wide a, wide b) { wmask r; LANEWISE (a.l[i] >= b.l[i]); }
 static inline wmask m_lt (wide a, wide b) { wmask r; LANEWISE (a.l[i] < b.l[i]); }
+static inline wmask m_ne (wide a, wide b) { wmask r; LANEWISE (a.l[i] != b.l[i]); }
 static inline wmask m_and (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] & b.l[i]); }
 static inline wmask m_or (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] | b.l[i]); }
 static inline wmask m_andnot (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] & !b.l[i]); }
@@ -416,12 +419,14 @@ static inline int m_any (wmask m) { return m.l[0] | m.l[1] | m.l[2] | m.l[3]; }
 #define W_ADD w_add
 #define W_SUB w_sub
 #define W_MUL w_mul
+#define W_DIV w_div
 #define W_NEG w_neg
 #define W_MAX w_max
 #define W_MIN w_min
 #define M_GT m_gt
 #define M_GE m_ge
 #define M_LT m_lt
+#define M_NE m_ne
 #define M_AND m_and
 #define M_OR m_or
 #define M_ANDNOT m_andnot
@@ -431,3 +436,4 @@ static inline int m_any (wmask m) { return m.l[0] | m.l[1] | m.l[2] | m.l[3]; }
 #define KERNEL_ATTR
 
 #include "contact_batch_kernel.h"
+#include "shock_kernel.h"

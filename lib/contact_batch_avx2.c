@@ -4,6 +4,7 @@
  * without the target attribute, these are the portable kernels. */
 #include "contact_batch.h"
 
+#include "shock_batch.h"
 #include "solver.h"
 
 #if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
@@ -19,6 +20,7 @@ typedef __m256d wmask;
 #define W_ADD _mm256_add_pd
 #define W_SUB _mm256_sub_pd
 #define W_MUL _mm256_mul_pd
+#define W_DIV _mm256_div_pd
 #define W_NEG(a) _mm256_xor_pd ((a), _mm256_set1_pd (-0.0))
 /* (v)maxpd and (v)minpd: a > b ? a : b and a < b ? a : b, lane by lane */
 #define W_MAX _mm256_max_pd
@@ -26,6 +28,8 @@ typedef __m256d wmask;
 #define M_GT(a, b) _mm256_cmp_pd ((a), (b), _CMP_GT_OQ)
 #define M_GE(a, b) _mm256_cmp_pd ((a), (b), _CMP_GE_OQ)
 #define M_LT(a, b) _mm256_cmp_pd ((a), (b), _CMP_LT_OQ)
+/* a != b, true where either is NaN */
+#define M_NE(a, b) _mm256_cmp_pd ((a), (b), _CMP_NEQ_UQ)
 #define M_AND _mm256_and_pd
 #define M_OR _mm256_or_pd
 #define M_ANDNOT(m, n) _mm256_andnot_pd ((n), (m))
@@ -36,6 +40,7 @@ typedef __m256d wmask;
 #define KERNEL_TRANSPOSE 1
 
 #include "contact_batch_kernel.h"
+#include "shock_kernel.h"
 
 #else
 
@@ -58,6 +63,12 @@ void contact_batch_solve_push_out_avx2 (contact_batch *c, int32_t n, struct solv
                                         double push_rate)
 {
   contact_batch_solve_push_out_portable (c, n, sb, inv_h, push_rate);
+}
+
+void shock_batch_solve_avx2 (shock_batch *c, int32_t n, int points, struct solver_body *sb, double tol, double inv_h,
+                             int32_t moves)
+{
+  shock_batch_solve_portable (c, n, points, sb, tol, inv_h, moves);
 }
 
 #endif

@@ -7,9 +7,9 @@
  * none), taken in the order written: the copies give the same bits.
  *
  *   W_LOAD(p) W_STORE(p, x) W_SET1(d)            four doubles
- *   W_ADD W_SUB W_MUL W_NEG                      arithmetic
+ *   W_ADD W_SUB W_MUL W_DIV W_NEG                arithmetic
  *   W_MAX(a, b)  a > b ? a : b    W_MIN(a, b)  a < b ? a : b   (per lane)
- *   M_GT M_GE M_LT(a, b) M_AND M_OR M_ANDNOT(m, n) (m and not n)
+ *   M_GT M_GE M_LT M_NE(a, b) M_AND M_OR M_ANDNOT(m, n) (m and not n)
  *   W_SEL(m, a, b)  m ? a : b      M_ANY(m)  some lane of m is set (an int)
  *
  * The equations are those of contact_solver.c, whose comments say why:

@@ -27,10 +27,15 @@
  *
  * and, for either, those from it down to the ground, whose lower bodies
  * must stay still for it. Elsewhere in the same pile the iterations do as
- * well on their own. */
+ * well on their own.
+ *
+ * The rows are solved in waves, four at a time, with the level order's
+ * results (shock_batch.h); a step whose waves need more batches than the
+ * room kept solves them one at a time. */
 
 #include "contact_solver.h"
 
+#include "shock_batch.h"
 #include "world.h"
 
 /* Levels of the bodies and the contacts in level order, in `order`. Returns
@@ -122,40 +127,6 @@ static void mark_loaded (carom_world *world, const int32_t *order, int32_t count
         mark[a_is_lower ? k->a : k->b] = 1;
     }
 }
-
-/* What the pass reads of a contact it may hold, copied once per step in
- * level order (contact_shock_prepare), so the passes stream through it:
- * which body is the upper one, and its share of the point's effective mass
- * with the lower body held still. A row's points follow those of the row
- * before it in world.shock_points: rows of one or two points (nearly all)
- * take no room for the four a contact may have. The impulse raises vn:
- * +x n on b, or -x n on a; its sign is folded into im_up and ang (x times
- * -1 is exact, so the upper body moves by the same bits either way). */
-typedef struct shock_point {
-  vec2 normal, ra, rb;
-  double adjusted, rn_a, rn_b;
-  double mass;         /* up->im + up->ii r_up^2, r_up = r x n at the upper body */
-  double ang;          /* up->ii r_up, negated when the upper body is a */
-  double gap;          /* what a speculative gap lets the point approach by
-                          (shock_gap), at the positions gap_at */
-} shock_point;
-
-/* shock_row.kind of a block (which has two points) */
-#define SHOCK_FACE 0
-
-typedef struct shock_row {
-  /* the solver bodies (solver_bodies does not move within a step), and
-   * the upper one, which alone takes the impulse */
-  const solver_body *a, *b;
-  solver_body *up;
-  int32_t count;
-  int32_t kind;        /* SHOCK_FACE for a block, else count */
-  int32_t gap_at;      /* the positions of the points' gaps (contact_shock's
-                          `moves`), -1 before the first */
-  double im_up;        /* up->im, negated when the upper body is a */
-  double k11, k12, k22; /* the 2x2 matrix with the lower body held (block) */
-  shock_point *p;       /* its `count` points */
-} shock_row;
 
 /* The rows of the contacts in `order` where the upper body rests on the
  * lower one (the normal from lower to upper within 60 degrees of straight
@@ -307,44 +278,226 @@ static inline void shock_row_solve (shock_row *r, int32_t count, int block, doub
       }
 }
 
+/* One row, by its kind (shock_row_solve's constants). */
+static void shock_row_pass (shock_row *r, double tol, double inv_h, int32_t moves)
+{
+  switch (r->kind)
+    {
+    case SHOCK_FACE:
+      shock_row_solve (r, 2, 1, tol, inv_h, moves);
+      break;
+    case 1:
+      shock_row_solve (r, 1, 0, tol, inv_h, moves);
+      break;
+    case 2:
+      shock_row_solve (r, 2, 0, tol, inv_h, moves);
+      break;
+    default:
+      shock_row_solve (r, r->count, 0, tol, inv_h, moves);
+    }
+}
+
+/* ----------------------------------------------------------------- waves */
+
+/* A row's place in its wave: with two points (a block or not), one, or
+ * more (solved one at a time). */
+enum { WAVE_TWO = 0, WAVE_ONE = 1, WAVE_MORE = 2, WAVE_KINDS = 3 };
+
+static int wave_kind (const shock_row *r)
+{
+  return r->count == 2 ? WAVE_TWO : r->count == 1 ? WAVE_ONE : WAVE_MORE;
+}
+
+/* The room make_waves takes in world.shock_scratch for n rows: each row's
+ * wave, the bodies' first waves that may write them, the waves' cursors,
+ * and the rows of more points. */
+static size_t wave_scratch (int32_t rows, int32_t slots)
+{
+  return 5 * (size_t) rows + WAVE_KINDS + (size_t) (slots + 1);
+}
+
+/* An unused lane: the inert body on both sides, every number 0. */
+static void pack_empty (shock_batch *c, int lane, int32_t inert, int np)
+{
+  int j;
+  c->a[lane] = c->b[lane] = c->up[lane] = inert;
+  c->up_is_a[lane] = 1.0;
+  c->im_up[lane] = c->face[lane] = 0.0;
+  c->k11[lane] = c->k12[lane] = c->k22[lane] = 0.0;
+  for (j = 0; j < np; ++j)
+    {
+      shock_lane_point *q = &c->p[j];
+      q->nx[lane] = q->ny[lane] = q->ra_x[lane] = q->ra_y[lane] = q->rb_x[lane] = q->rb_y[lane] = 0.0;
+      q->adjusted[lane] = q->rn_a[lane] = q->rn_b[lane] = q->mass[lane] = q->ang[lane] = q->gap[lane] = 0.0;
+    }
+}
+
+static void pack_row (shock_batch *c, int lane, const shock_row *r, const solver_body *sb)
+{
+  int j, face = r->kind == SHOCK_FACE;
+  c->a[lane] = (int32_t) (r->a - sb);
+  c->b[lane] = (int32_t) (r->b - sb);
+  c->up[lane] = (int32_t) (r->up - sb);
+  c->up_is_a[lane] = r->up == r->a;
+  c->im_up[lane] = r->im_up;
+  c->face[lane] = face;
+  /* make_rows sets the matrix of blocks alone */
+  c->k11[lane] = face ? r->k11 : 0.0;
+  c->k12[lane] = face ? r->k12 : 0.0;
+  c->k22[lane] = face ? r->k22 : 0.0;
+  for (j = 0; j < r->count; ++j)
+    {
+      const shock_point *p = &r->p[j];
+      shock_lane_point *q = &c->p[j];
+      q->nx[lane] = p->normal.x, q->ny[lane] = p->normal.y;
+      q->ra_x[lane] = p->ra.x, q->ra_y[lane] = p->ra.y, q->rb_x[lane] = p->rb.x, q->rb_y[lane] = p->rb.y;
+      q->adjusted[lane] = p->adjusted, q->rn_a[lane] = p->rn_a, q->rn_b[lane] = p->rn_b;
+      q->mass[lane] = p->mass, q->ang[lane] = p->ang;
+      q->gap[lane] = 0.0;
+    }
+}
+
+/* The waves of the step's n rows and their batches (shock_batch.h).
+ * Returns how many waves, or 0 when the rows are to be solved one at a
+ * time: there are none, or they need more batches than the room kept,
+ * which the next step's reserve makes (either way gives the same bits). */
+static int32_t make_waves (carom_world *world, int32_t n)
+{
+  const solver_body *sb = world->solver_bodies;
+  const shock_row *rows = world->shock_rows;
+  shock_batch *batches = world->shock_batches;
+  int32_t slots = world->slot_count + 1, inert = world->slot_count;
+  int32_t *wave = world->shock_scratch, *written = wave + n, *at = written + slots;
+  int32_t *more, waves = 0, batch_count = 0, more_count = 0, i, w;
+  for (i = 0; i < slots; ++i)
+    written[i] = 0;
+  /* a row goes after the last wave that wrote either of its bodies
+   * (written[x] is the first wave past it). In level order that is all:
+   * a body is written as an upper body by the rows from the level below
+   * it, which come before every row from its own level, where it is read
+   * as the lower one; so no row writes a body an earlier row read. */
+  for (i = 0; i < n; ++i)
+    {
+      const shock_row *r = &rows[i];
+      int32_t up = (int32_t) (r->up - sb), low = (int32_t) ((r->up == r->a ? r->b : r->a) - sb);
+      w = written[up] > written[low] ? written[up] : written[low];
+      wave[i] = w;
+      written[up] = w + 1;
+      waves = waves > w + 1 ? waves : w + 1;
+    }
+  more = at + WAVE_KINDS * (size_t) waves;
+  for (i = 0; i < WAVE_KINDS * waves; ++i)
+    at[i] = 0;
+  for (i = 0; i < n; ++i)
+    ++at[WAVE_KINDS * wave[i] + wave_kind (&rows[i])];
+  /* wave by wave, its batches of two-point rows, then of one-point rows;
+   * the cursors count lanes from the batches' start (the rows of more
+   * points: places in `more`) */
+  for (w = 0; w < waves; ++w)
+    {
+      int32_t *c = &at[WAVE_KINDS * w], two = c[WAVE_TWO], one = c[WAVE_ONE], extra = c[WAVE_MORE];
+      c[WAVE_TWO] = BATCH_LANES * batch_count;
+      batch_count += (two + BATCH_LANES - 1) / BATCH_LANES;
+      c[WAVE_ONE] = BATCH_LANES * batch_count;
+      batch_count += (one + BATCH_LANES - 1) / BATCH_LANES;
+      c[WAVE_MORE] = more_count;
+      more_count += extra;
+    }
+  if (batch_count > world->shock_batch_cap)
+    {
+      world->shock_batch_want = batch_count;
+      return 0;
+    }
+  for (i = 0; i < n; ++i)
+    {
+      int kind = wave_kind (&rows[i]);
+      int32_t place = at[WAVE_KINDS * wave[i] + kind]++;
+      if (kind == WAVE_MORE)
+        more[place] = i;
+      else
+        pack_row (&batches[place / BATCH_LANES], place % BATCH_LANES, &rows[i], sb);
+    }
+  /* each cursor now ends its run: fill the last batch's unused lanes */
+  for (w = 0; w < waves; ++w)
+    {
+      int kind;
+      for (kind = WAVE_TWO; kind <= WAVE_ONE; ++kind)
+        {
+          int32_t end = at[WAVE_KINDS * w + kind], lane;
+          for (lane = end % BATCH_LANES; lane > 0 && lane < BATCH_LANES; ++lane)
+            pack_empty (&batches[end / BATCH_LANES], lane, inert, kind == WAVE_TWO ? 2 : 1);
+        }
+    }
+  for (i = 0; i < batch_count; ++i)
+    batches[i].gap_at = -1;
+  return waves;
+}
+
+/* The rows' pass wave by wave: each wave's batches, then its rows of more
+ * points (make_waves' cursors give where each run ends). */
+static void wave_pass (carom_world *world, double tol, double inv_h, int32_t moves)
+{
+  const int32_t *at = world->shock_scratch + world->shock_count + (world->slot_count + 1);
+  const int32_t *more = at + WAVE_KINDS * (size_t) world->shock_waves;
+  shock_batch *batches = world->shock_batches;
+  void (*solve) (shock_batch *, int32_t, int, solver_body *, double, double, int32_t)
+    = world->solver_path == SOLVER_PATH_AVX2 ? shock_batch_solve_avx2 : shock_batch_solve_portable;
+  int32_t w, begin = 0, m = 0;
+  for (w = 0; w < world->shock_waves; ++w)
+    {
+      const int32_t *c = &at[WAVE_KINDS * w];
+      int32_t two_end = (c[WAVE_TWO] + BATCH_LANES - 1) / BATCH_LANES;
+      int32_t one_end = (c[WAVE_ONE] + BATCH_LANES - 1) / BATCH_LANES;
+      if (two_end > begin)
+        solve (&batches[begin], two_end - begin, 2, world->solver_bodies, tol, inv_h, moves);
+      if (one_end > two_end)
+        solve (&batches[two_end], one_end - two_end, 1, world->solver_bodies, tol, inv_h, moves);
+      for (; m < c[WAVE_MORE]; ++m)
+        shock_row_pass (&world->shock_rows[more[m]], tol, inv_h, moves);
+      begin = one_end;
+    }
+}
+
 static void shock_pass (carom_world *world, const step_context *ctx, double tol, int32_t moves)
 {
   shock_row *rows = world->shock_rows;
   double inv_h = ctx->inv_h;
   int32_t i;
+  if (world->shock_waves > 0)
+    {
+      wave_pass (world, tol, inv_h, moves);
+      return;
+    }
   for (i = 0; i < world->shock_count; ++i)
-    switch (rows[i].kind)
-      {
-      case SHOCK_FACE:
-        shock_row_solve (&rows[i], 2, 1, tol, inv_h, moves);
-        break;
-      case 1:
-        shock_row_solve (&rows[i], 1, 0, tol, inv_h, moves);
-        break;
-      case 2:
-        shock_row_solve (&rows[i], 2, 0, tol, inv_h, moves);
-        break;
-      default:
-        shock_row_solve (&rows[i], rows[i].count, 0, tol, inv_h, moves);
-      }
+    shock_row_pass (&rows[i], tol, inv_h, moves);
 }
 
 int contact_shock_reserve (carom_world *world)
 {
-  /* solver_reserve's room */
+  /* solver_reserve's room; batches as many as a step wanted */
+  int32_t want = world->shock_batch_want > world->shock_batch_cap ? world->shock_batch_want : world->shock_batch_cap;
   return mem_reserve (&world->allocator, (void **) &world->shock_rows, &world->shock_cap,
                       world->contacts.room_count, sizeof (shock_row))
          && mem_reserve (&world->allocator, (void **) &world->shock_points, &world->shock_point_cap,
-                         world->contacts.room_points, sizeof (shock_point));
+                         world->contacts.room_points, sizeof (shock_point))
+         && mem_reserve (&world->allocator, (void **) &world->shock_scratch, &world->shock_scratch_cap,
+                         (int32_t) wave_scratch (world->contacts.room_count, world->slot_count), sizeof (int32_t))
+         && mem_reserve (&world->allocator, (void **) &world->shock_batches, &world->shock_batch_cap, want,
+                         sizeof (shock_batch));
 }
 
 void contact_shock_destroy (carom_world *world)
 {
   mem_free (&world->allocator, world->shock_rows, (size_t) world->shock_cap * sizeof (shock_row));
   mem_free (&world->allocator, world->shock_points, (size_t) world->shock_point_cap * sizeof (shock_point));
+  mem_free (&world->allocator, world->shock_scratch, (size_t) world->shock_scratch_cap * sizeof (int32_t));
+  mem_free (&world->allocator, world->shock_batches, (size_t) world->shock_batch_cap * sizeof (shock_batch));
   world->shock_rows = NULL;
   world->shock_points = NULL;
-  world->shock_cap = world->shock_point_cap = 0;
+  world->shock_scratch = NULL;
+  world->shock_batches = NULL;
+  world->shock_cap = world->shock_point_cap = world->shock_scratch_cap = world->shock_batch_cap = 0;
+  world->shock_batch_want = 0;
 }
 
 /* What each body rests on, in `count` (one per slot): a column's link
@@ -410,7 +563,7 @@ void contact_shock_prepare (carom_world *world, const step_context *ctx)
 {
   int32_t *order, *mark, count;
   vec2 up_dir;
-  world->shock_count = 0;
+  world->shock_count = world->shock_waves = 0;
   if (ctx->gravity.x == 0.0 && ctx->gravity.y == 0.0)
     return;
   up_dir = v2_neg (v2_normalize (ctx->gravity));
@@ -421,6 +574,7 @@ void contact_shock_prepare (carom_world *world, const step_context *ctx)
   count = levels (world, &order);
   mark_loaded (world, order, count, mark);
   world->shock_count = make_rows (world, ctx, order, count, mark);
+  world->shock_waves = make_waves (world, world->shock_count);
 }
 
 /* The cold start. A pile built at rest has no impulses to warm start from,

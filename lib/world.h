@@ -43,6 +43,12 @@ struct carom_world {
   int32_t shock_cap;
   struct shock_point *shock_points;  /* the rows' points, in row order */
   int32_t shock_point_cap;
+  int32_t shock_waves;               /* the rows' waves, 0: solved one at a time */
+  struct shock_batch *shock_batches; /* the waves' rows four at a time */
+  int32_t shock_batch_cap;
+  int32_t shock_batch_want;          /* batches a step wanted past the room */
+  int32_t *shock_scratch;            /* the waves' making and bounds */
+  int32_t shock_scratch_cap;
   int32_t *restitution_list;         /* the struck contacts of a step */
   int32_t restitution_cap;
   struct impact_shift *impact_shifts; /* per slot, and the contacts an

@@ -5,6 +5,8 @@
 #include <stdio.h>
 
 #include "contact_batch.h"
+#include "contact_solver.h"
+#include "shock_batch.h"
 #include "solver.h"
 #include "world.h"
 
@@ -197,12 +199,127 @@ static void test_every_path_gives_the_same_bits (void **state)
   }
 }
 
+
+/* Columns for shock propagation's waves: stacks of boxes, some capped by
+ * a body fifty times heavier, some with a disc, a compound or a comb on
+ * top (rows of one, two and more points), set down a little apart and askew so that
+ * they rattle as they land. The vertex-edge narrow phase gives contacts
+ * of more than two points. */
+static carom_world *columns (carom_narrow_phase narrow)
+{
+  carom_world *w = NULL;
+  carom_world_def def;
+  carom_body_def d;
+  int col, i;
+  carom_world_def_init (&def, sizeof def);
+  def.gravity_y = -10.0;
+  def.friction = 0.6;
+  def.narrow_phase = narrow;
+  assert_status (carom_world_init (&w, &def), CAROM_OK);
+  add_box (w, CAROM_STATIC, 0.0, -0.5, 0.0, 80.0, 1.0);
+  for (col = 0; col < 12; ++col)
+    {
+      double x = -30.0 + 5.0 * col, y = 0.55;
+      int height = 2 + col % 6;
+      for (i = 0; i < height; ++i, y += 1.05)
+        add_box (w, CAROM_DYNAMIC, x + 0.03 * (i % 3), y, 0.02 * ((i + col) % 3 - 1), 1.0, 1.0);
+      carom_body_def_init (&d, sizeof d);
+      d.x = x, d.y = y + 0.5;
+      switch (col % 4)
+        {
+        case 0:
+          d.density = 50.0;
+          assert_status (carom_world_add_box (w, &d, 1.2, 0.8, NULL), CAROM_OK);
+          break;
+        case 1:
+          assert_status (carom_world_add_circle (w, &d, 0.45, NULL), CAROM_OK);
+          break;
+        case 2:
+          {
+            static const double block[] = { -0.22, -0.3, 0.22, -0.3, 0.22, 0.3, -0.22, 0.3 };
+            carom_shape_def parts[2];
+            int k;
+            for (k = 0; k < 2; ++k)
+              {
+                assert_status (carom_shape_def_init (&parts[k], sizeof parts[k]), CAROM_OK);
+                parts[k].kind = CAROM_SHAPE_POLYGON;
+                parts[k].xy = block, parts[k].count = 4;
+                parts[k].x = k == 0 ? -0.25 : 0.25;
+              }
+            d.density = 20.0;
+            assert_status (carom_world_add_compound (w, &d, parts, 2, NULL), CAROM_OK);
+          }
+          break;
+        default:
+          {
+            /* a comb, its three teeth down: a contact of three points */
+            static const double comb[] = { -0.6, -0.3, -0.4, -0.3, -0.4, 0.0, -0.1, 0.0, -0.1, -0.3, 0.1, -0.3,
+                                           0.1,  0.0,  0.4,  0.0,  0.4,  -0.3, 0.6, -0.3, 0.6,  0.3,  -0.6, 0.3 };
+            d.density = 20.0;
+            assert_status (carom_world_add_polygon (w, &d, comb, 12, NULL), CAROM_OK);
+          }
+        }
+    }
+  return w;
+}
+
+/* Shock propagation's rows solved in waves, four at a time (shock_batch.h),
+ * give the bits of the rows solved one at a time in level order, on every
+ * path: the one world keeps its batches, the other has them released
+ * before each step (contact_shock_destroy), which leaves no room for any
+ * and so solves its rows one at a time. With either narrow phase. */
+static void test_shock_waves_keep_the_level_order (void **state)
+{
+  const int paths[] = { SOLVER_PATH_PORTABLE, SOLVER_PATH_AVX2 };
+  int p, narrow, more_anywhere = 0;
+  (void) state;
+  for (p = 0; p < 4; ++p)
+    {
+      carom_world *waves, *rows;
+      int32_t step, waved = 0, most_waves = 0, rows_alone = 0, more = 0;
+      narrow = p / 2 ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
+      if (!solver_path_available ((solver_path) paths[p % 2]))
+        continue;
+      waves = columns ((carom_narrow_phase) narrow);
+      rows = columns ((carom_narrow_phase) narrow);
+      assert_true (world_set_solver_path (waves, paths[p % 2]));
+      assert_true (world_set_solver_path (rows, paths[p % 2]));
+      for (step = 0; step < 300; ++step)
+        {
+          int32_t i;
+          contact_shock_destroy (rows);
+          assert_status (carom_world_update (waves, 1.0 / 60), CAROM_OK);
+          assert_status (carom_world_update (rows, 1.0 / 60), CAROM_OK);
+          if (world_state_hash (waves) != world_state_hash (rows))
+            fail_msg ("path %d, narrow phase %d: the waves differ from the rows one at a time at step %d",
+                      paths[p % 2], narrow, (int) step);
+          assert_int_equal (rows->shock_waves, 0);
+          rows_alone += rows->shock_count > 0;
+          waved += waves->shock_waves > 0;
+          most_waves = waves->shock_waves > most_waves ? waves->shock_waves : most_waves;
+          for (i = 0; i < waves->shock_count; ++i)
+            more += waves->shock_waves > 0 && waves->shock_rows[i].count > 2;
+        }
+      /* the waves ran, many deep, rows of more points among them; the
+       * other world solved its rows one at a time */
+      printf ("path %d, narrow phase %d: %d steps in waves (at most %d), %d rows of more points, %d steps one at a "
+              "time\n",
+              paths[p % 2], narrow, (int) waved, (int) most_waves, (int) more, (int) rows_alone);
+      assert_true (waved > 250 && most_waves >= 6 && rows_alone > 250);
+      more_anywhere += more;
+      carom_world_destroy (waves);
+      carom_world_destroy (rows);
+    }
+  assert_true (more_anywhere > 100);
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test (test_constraint_colour_takes_the_first_free),
     cmocka_unit_test (test_batches_are_properly_coloured),
     cmocka_unit_test (test_every_path_gives_the_same_bits),
+    cmocka_unit_test (test_shock_waves_keep_the_level_order),
   };
   return cmocka_run_group_tests (tests, NULL, NULL);
 }
