@@ -108,47 +108,50 @@ static int column_link (const contact *k, const solver_body *lower)
 /* Which bodies the pass holds others on, in `mark`, which holds
  * count_supports' counts: every dynamic body that rests on a column's link
  * alone, both bodies of every heavy-on-light contact, then, going down the
- * levels, every body such a body rests on. */
-static void mark_loaded (carom_world *world, const int32_t *order, int32_t count, int32_t *mark)
+ * levels, every body such a body rests on. The contacts of `order` that
+ * make rows (the upper body marked and resting on the lower one, the
+ * normal from lower to upper within 60 degrees of straight up) go into
+ * `rows`, in reverse order; returns how many. */
+static int32_t mark_loaded (carom_world *world, vec2 up_dir, const int32_t *order, int32_t count, int32_t *mark,
+                            int32_t *rows)
 {
   const contacts *c = &world->contacts;
   const solver_body *sb = world->solver_bodies;
   const int32_t *level = world->solver_scratch;
-  int32_t i;
+  int32_t i, n = 0;
   for (i = 0; i < world->slot_count; ++i)
     mark[i] = (mark[i] & SUPPORT_HEAVY) != 0 || (mark[i] == 1 && sb[i].im > 0.0);
-  /* `order` goes up the levels, so backwards a body is marked before the
-   * contacts it rests on are reached */
+  /* `order` goes up the levels, so backwards a body is marked (for good)
+   * before the contacts it rests on are reached */
   for (i = count - 1; i >= 0; --i)
     {
       const contact *k = &c->list[order[i]];
       int a_is_lower = level[k->a] < level[k->b];
       if (mark[a_is_lower ? k->b : k->a])
-        mark[a_is_lower ? k->a : k->b] = 1;
+        {
+          mark[a_is_lower ? k->a : k->b] = 1;
+          rows[n] = order[i];
+          n += rests_on (k, level, up_dir);
+        }
     }
+  return n;
 }
 
-/* The rows of the contacts in `order` where the upper body rests on the
- * lower one (the normal from lower to upper within 60 degrees of straight
- * up) and the upper body is marked (mark_loaded). Returns how many. */
-static int32_t make_rows (carom_world *world, const step_context *ctx, const int32_t *order, int32_t count,
-                          const int32_t *mark)
+/* The rows of the n contacts of `list` (mark_loaded's), in level order. */
+static void make_rows (carom_world *world, const int32_t *list, int32_t n)
 {
-  vec2 up_dir = v2_neg (v2_normalize (ctx->gravity));
   const contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
   const int32_t *level = world->solver_scratch;
   shock_row *rows = world->shock_rows;
   shock_point *points = world->shock_points;
-  int32_t i, j, n = 0;
-  for (i = 0; i < count; ++i)
+  int32_t i, j;
+  for (i = 0; i < n; ++i)
     {
-      const contact *k = &c->list[order[i]];
+      const contact *k = &c->list[list[n - 1 - i]];
       int a_is_lower = level[k->a] < level[k->b];
       solver_body *up = a_is_lower ? &sb[k->b] : &sb[k->a];
-      shock_row *r = &rows[n];
-      if (!rests_on (k, level, up_dir) || !mark[a_is_lower ? k->b : k->a])
-        continue;
+      shock_row *r = &rows[i];
       r->a = &sb[k->a], r->b = &sb[k->b];
       r->up = up;
       r->im_up = a_is_lower ? up->im : -up->im;
@@ -176,9 +179,7 @@ static int32_t make_rows (carom_world *world, const step_context *ctx, const int
           r->k12 = up->im * n12 + up->ii * r1 * r2;
           r->k22 = up->im + up->ii * r2 * r2;
         }
-      ++n;
     }
-  return n;
 }
 
 /* The separation of a row's point now, as contact_separation. */
@@ -572,8 +573,9 @@ void contact_shock_prepare (carom_world *world, const step_context *ctx)
   if (!count_supports (world, up_dir, mark))
     return;
   count = levels (world, &order);
-  mark_loaded (world, order, count, mark);
-  world->shock_count = make_rows (world, ctx, order, count, mark);
+  /* the rows' contacts go where make_waves later keeps each row's wave */
+  world->shock_count = mark_loaded (world, up_dir, order, count, mark, world->shock_scratch);
+  make_rows (world, world->shock_scratch, world->shock_count);
   world->shock_waves = make_waves (world, world->shock_count);
 }
 
