@@ -199,12 +199,11 @@ static void test_every_path_gives_the_same_bits (void **state)
   }
 }
 
-
 /* Columns for shock propagation's waves: stacks of boxes, some capped by
- * a body fifty times heavier, some with a disc, a compound or a comb on
- * top (rows of one, two and more points), set down a little apart and askew so that
- * they rattle as they land. The vertex-edge narrow phase gives contacts
- * of more than two points. */
+ * a body fifty times heavier (with a post beside the cap), some with a
+ * disc, a compound or a comb on top (rows of one, two and more points),
+ * set down a little apart and askew so that they rattle as they land. The
+ * vertex-edge narrow phase gives contacts of more than two points. */
 static carom_world *columns (carom_narrow_phase narrow)
 {
   carom_world *w = NULL;
@@ -230,6 +229,10 @@ static carom_world *columns (carom_narrow_phase narrow)
         case 0:
           d.density = 50.0;
           assert_status (carom_world_add_box (w, &d, 1.2, 0.8, NULL), CAROM_OK);
+          /* a post on the ground against the heavy cap's side: a contact
+           * of a body held up (the cap) with one of a lower level, which
+           * it does not rest on */
+          add_box (w, CAROM_DYNAMIC, x + 0.76, 0.5 * (y + 0.9), 0.0, 0.3, y + 0.9);
           break;
         case 1:
           assert_status (carom_world_add_circle (w, &d, 0.45, NULL), CAROM_OK);
@@ -294,6 +297,14 @@ static void test_shock_waves_keep_the_level_order (void **state)
             fail_msg ("path %d, narrow phase %d: the waves differ from the rows one at a time at step %d",
                       paths[p % 2], narrow, (int) step);
           assert_int_equal (rows->shock_waves, 0);
+          /* a row's upper body rests on its lower one: the normal (from a
+           * to b) points up to it within 60 degrees */
+          for (i = 0; i < waves->shock_count; ++i)
+            {
+              const shock_row *r = &waves->shock_rows[i];
+              double lift = r->p[0].normal.y;
+              assert_true ((r->up == r->b ? lift : -lift) >= 0.5);
+            }
           rows_alone += rows->shock_count > 0;
           waved += waves->shock_waves > 0;
           most_waves = waves->shock_waves > most_waves ? waves->shock_waves : most_waves;
