@@ -57,20 +57,22 @@ static int32_t order_by_level (carom_world *world, int32_t *order)
           queue[tail++] = i;
         }
     }
+  /* by selects, every store made and the count moved past it or not:
+   * whether a body is new and whether a contact goes up are not
+   * predictable (solver_reserve keeps a slot past the queue and past the
+   * order for the last stores, which no count moves past) */
   while (head < tail)
     {
-      int32_t u = queue[head++], e;
+      int32_t u = queue[head++], e, lu = level[u];
       for (e = start[u]; e < start[u + 1]; ++e)
         {
-          int32_t v = other[e];
-          if (level[v] < 0)
-            {
-              level[v] = level[u] + 1;
-              queue[tail++] = v;
-            }
+          int32_t v = other[e], fresh = level[v] < 0, lv = select_int (fresh, lu + 1, level[v]);
+          level[v] = lv;
+          queue[tail] = v;
+          tail += fresh;
           /* contacts in the order their lower body is reached */
-          if (level[v] > level[u])
-            order[count++] = adj[e];
+          order[count] = adj[e];
+          count += lv > lu;
         }
     }
   return count;
@@ -540,10 +542,17 @@ static int count_supports (const carom_world *world, vec2 up_dir, int32_t *count
   return needs;
 }
 
-/* Where the level order goes in solver_scratch (solver_reserve's room). */
+/* Where the level order goes in solver_scratch (solver_reserve's room:
+ * after the levels, the adjacency's starts and contacts, and the queue
+ * with its spare slot), and the marks after it and its spare slot. */
 static int32_t *level_order (carom_world *world)
 {
-  return world->solver_scratch + 3 * world->slot_count + 1 + 2 * world->contacts.count;
+  return world->solver_scratch + 3 * world->slot_count + 2 + 2 * world->contacts.count;
+}
+
+static int32_t *level_marks (carom_world *world)
+{
+  return level_order (world) + world->contacts.count + 1;
 }
 
 /* The contacts in level order (`order`) and the bodies' levels, computed
@@ -568,11 +577,24 @@ void contact_shock_prepare (carom_world *world, const step_context *ctx)
   if (ctx->gravity.x == 0.0 && ctx->gravity.y == 0.0)
     return;
   up_dir = v2_neg (v2_normalize (ctx->gravity));
-  /* solver_reserve leaves room for the level order and the marks after it */
-  mark = level_order (world) + world->contacts.count;
+  mark = level_marks (world);
   if (!count_supports (world, up_dir, mark))
     return;
+#ifdef CAROM_DEBUG_CHECKS
+  {
+    /* the levels' walk makes its last stores past the order, into the
+     * spare slot before the marks (order_by_level) */
+    int32_t first = mark[0];
+    count = levels (world, &order);
+    if (mark[0] != first)
+      {
+        fprintf (stderr, "carom: CAROM_DEBUG_CHECKS: the levels' walk wrote past its order\n");
+        abort ();
+      }
+  }
+#else
   count = levels (world, &order);
+#endif
   /* the rows' contacts go where make_waves later keeps each row's wave */
   world->shock_count = mark_loaded (world, up_dir, order, count, mark, world->shock_scratch);
   make_rows (world, world->shock_scratch, world->shock_count);
@@ -613,7 +635,7 @@ void contact_cold_start (carom_world *world, const step_context *ctx)
     return;
   up_dir = v2_neg (v2_normalize (ctx->gravity));
   count = levels (world, &order);
-  supports = order + c->count;
+  supports = level_marks (world);
   for (i = 0; i < world->slot_count; ++i)
     {
       load[i] = sb[i].moves == MOVES_DYNAMIC && sb[i].im > 0.0 ? ctx->accel * ctx->h / sb[i].im : 0.0;

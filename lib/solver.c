@@ -142,10 +142,11 @@ int solver_reserve (carom_world *world)
 {
   /* shock.c: levels, adjacency starts, queue and marks (or the cold
    * start's supports) per body; adjacency (two per contact), the level
-   * order, and the adjacency's other bodies (two per contact) per contact */
+   * order, and the adjacency's other bodies (two per contact) per contact;
+   * a spare slot after the queue and after the order (order_by_level) */
   contacts *c = &world->contacts;
   int32_t room = contacts_headroom (world), count = c->count + room;
-  int32_t need = 4 * world->slot_count + 1 + 5 * count;
+  int32_t need = 4 * world->slot_count + 3 + 5 * count;
   int32_t batches = count / BATCH_LANES + 2 * CONSTRAINT_COLOURS;
   /* the contacts added after the impacts (contacts_after_impacts) go in
    * room kept now: nothing is allocated within the step. Every array per
@@ -221,7 +222,7 @@ void solver_contact_adjacency (carom_world *world, int32_t **start_out, int32_t 
   int32_t count = world->contacts.count;
   int32_t n = world->slot_count, i;
   int32_t *start = world->solver_scratch + n, *adj = start + n + 1;
-  int32_t *other = world->solver_scratch + 4 * n + 1 + 3 * count;
+  int32_t *other = world->solver_scratch + 4 * n + 3 + 3 * count;
   for (i = 0; i <= n; ++i)
     start[i] = 0;
   for (i = 0; i < count; ++i)
