@@ -46,24 +46,18 @@ KERNEL_FN void KERNEL (transpose) (wide r0, wide r1, wide r2, wide r3, wide *c0,
  * pv.x pv.y pw -, dp.x dp.y dq.c dq.s (checked in contact_batch.c): the
  * velocities are the row at 0 (pseudo: at 4), the motion since the step
  * began the row at 8. */
-KERNEL_FN void KERNEL (gather) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o, int pseudo)
+KERNEL_FN void KERNEL (gather_velocities) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o, int pseudo)
 {
-  const double *b0 = &sb[idx[0]].v.x, *b1 = &sb[idx[1]].v.x, *b2 = &sb[idx[2]].v.x, *b3 = &sb[idx[3]].v.x;
   int at = pseudo ? 4 : 0;
   wide rest;
-  KERNEL (transpose) (W_LOAD (b0 + at), W_LOAD (b1 + at), W_LOAD (b2 + at), W_LOAD (b3 + at), &o->vx, &o->vy, &o->w,
-                      &rest);
-  KERNEL (transpose) (W_LOAD (b0 + 8), W_LOAD (b1 + 8), W_LOAD (b2 + 8), W_LOAD (b3 + 8), &o->px, &o->py, &o->qc,
-                      &o->qs);
+  KERNEL (transpose) (W_LOAD (&sb[idx[0]].v.x + at), W_LOAD (&sb[idx[1]].v.x + at), W_LOAD (&sb[idx[2]].v.x + at),
+                      W_LOAD (&sb[idx[3]].v.x + at), &o->vx, &o->vy, &o->w, &rest);
 }
 
-/* The pseudo-velocities alone into o, whose motion since the step began
- * (gathered with the velocities) stays. */
-KERNEL_FN void KERNEL (gather_pseudo) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o)
+KERNEL_FN void KERNEL (gather_motion) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o)
 {
-  wide rest;
-  KERNEL (transpose) (W_LOAD (&sb[idx[0]].v.x + 4), W_LOAD (&sb[idx[1]].v.x + 4), W_LOAD (&sb[idx[2]].v.x + 4),
-                      W_LOAD (&sb[idx[3]].v.x + 4), &o->vx, &o->vy, &o->w, &rest);
+  KERNEL (transpose) (W_LOAD (&sb[idx[0]].v.x + 8), W_LOAD (&sb[idx[1]].v.x + 8), W_LOAD (&sb[idx[2]].v.x + 8),
+                      W_LOAD (&sb[idx[3]].v.x + 8), &o->px, &o->py, &o->qc, &o->qs);
 }
 
 /* Lanes write back in order, the fourth double of each row 0; a body that
@@ -82,9 +76,10 @@ KERNEL_FN void KERNEL (scatter) (solver_body *sb, const int32_t *idx, const KERN
   W_STORE (b3 + at, r3);
 }
 #else
-KERNEL_FN void KERNEL (gather) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o, int pseudo)
+/* The velocities (pseudo: the pseudo-velocities) of the lanes' bodies. */
+KERNEL_FN void KERNEL (gather_velocities) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o, int pseudo)
 {
-  double t[7][BATCH_LANES];
+  double t[3][BATCH_LANES];
   int i;
   for (i = 0; i < BATCH_LANES; ++i)
     {
@@ -92,36 +87,29 @@ KERNEL_FN void KERNEL (gather) (const solver_body *sb, const int32_t *idx, KERNE
       t[0][i] = pseudo ? s->pv.x : s->v.x;
       t[1][i] = pseudo ? s->pv.y : s->v.y;
       t[2][i] = pseudo ? s->pw : s->w;
-      t[3][i] = s->dp.x;
-      t[4][i] = s->dp.y;
-      t[5][i] = s->dq.c;
-      t[6][i] = s->dq.s;
     }
   o->vx = W_LOAD (t[0]);
   o->vy = W_LOAD (t[1]);
   o->w = W_LOAD (t[2]);
-  o->px = W_LOAD (t[3]);
-  o->py = W_LOAD (t[4]);
-  o->qc = W_LOAD (t[5]);
-  o->qs = W_LOAD (t[6]);
 }
 
-/* The pseudo-velocities alone into o, whose motion since the step began
- * (gathered with the velocities) stays. */
-KERNEL_FN void KERNEL (gather_pseudo) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o)
+/* Their motion since the step began. */
+KERNEL_FN void KERNEL (gather_motion) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o)
 {
-  double t[3][BATCH_LANES];
+  double t[4][BATCH_LANES];
   int i;
   for (i = 0; i < BATCH_LANES; ++i)
     {
-      const solver_body *x = &sb[idx[i]];
-      t[0][i] = x->pv.x;
-      t[1][i] = x->pv.y;
-      t[2][i] = x->pw;
+      const solver_body *s = &sb[idx[i]];
+      t[0][i] = s->dp.x;
+      t[1][i] = s->dp.y;
+      t[2][i] = s->dq.c;
+      t[3][i] = s->dq.s;
     }
-  o->vx = W_LOAD (t[0]);
-  o->vy = W_LOAD (t[1]);
-  o->w = W_LOAD (t[2]);
+  o->px = W_LOAD (t[0]);
+  o->py = W_LOAD (t[1]);
+  o->qc = W_LOAD (t[2]);
+  o->qs = W_LOAD (t[3]);
 }
 
 /* Lanes write back in order; a body that two lanes share does not move
@@ -143,6 +131,21 @@ KERNEL_FN void KERNEL (scatter) (solver_body *sb, const int32_t *idx, const KERN
     }
 }
 #endif
+
+/* The velocities (pseudo: the pseudo-velocities) and the motion since the
+ * step began of the lanes' bodies. */
+KERNEL_FN void KERNEL (gather) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o, int pseudo)
+{
+  KERNEL (gather_velocities) (sb, idx, o, pseudo);
+  KERNEL (gather_motion) (sb, idx, o);
+}
+
+/* The pseudo-velocities alone into o, whose motion since the step began
+ * (gathered with the velocities) stays. */
+KERNEL_FN void KERNEL (gather_pseudo) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o)
+{
+  KERNEL (gather_velocities) (sb, idx, o, 1);
+}
 
 /* The masses of a batch's lanes. */
 typedef struct KERNEL (mass) {

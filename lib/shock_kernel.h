@@ -55,53 +55,6 @@ KERNEL_FN wide KERNEL (shock_single) (wide err, wide mass)
   return W_SEL (M_AND (M_LT (err, zero), M_GT (mass, zero)), W_DIV (W_NEG (err), mass), zero);
 }
 
-/* A lane's velocities alone (row 0 of solver_body), and its motion since
- * the step began alone (row 8; contact_batch_kernel.h's gather does both):
- * most batches need only the first. */
-#ifdef KERNEL_TRANSPOSE
-KERNEL_FN void KERNEL (shock_gather_v) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o)
-{
-  wide rest;
-  KERNEL (transpose) (W_LOAD (&sb[idx[0]].v.x), W_LOAD (&sb[idx[1]].v.x), W_LOAD (&sb[idx[2]].v.x),
-                      W_LOAD (&sb[idx[3]].v.x), &o->vx, &o->vy, &o->w, &rest);
-}
-
-KERNEL_FN void KERNEL (shock_gather_motion) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o)
-{
-  KERNEL (transpose) (W_LOAD (&sb[idx[0]].v.x + 8), W_LOAD (&sb[idx[1]].v.x + 8), W_LOAD (&sb[idx[2]].v.x + 8),
-                      W_LOAD (&sb[idx[3]].v.x + 8), &o->px, &o->py, &o->qc, &o->qs);
-}
-#else
-KERNEL_FN void KERNEL (shock_gather_v) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o)
-{
-  double t[3][BATCH_LANES];
-  int i;
-  for (i = 0; i < BATCH_LANES; ++i)
-    {
-      const solver_body *s = &sb[idx[i]];
-      t[0][i] = s->v.x, t[1][i] = s->v.y, t[2][i] = s->w;
-    }
-  o->vx = W_LOAD (t[0]);
-  o->vy = W_LOAD (t[1]);
-  o->w = W_LOAD (t[2]);
-}
-
-KERNEL_FN void KERNEL (shock_gather_motion) (const solver_body *sb, const int32_t *idx, KERNEL (lanes) *o)
-{
-  double t[4][BATCH_LANES];
-  int i;
-  for (i = 0; i < BATCH_LANES; ++i)
-    {
-      const solver_body *s = &sb[idx[i]];
-      t[0][i] = s->dp.x, t[1][i] = s->dp.y, t[2][i] = s->dq.c, t[3][i] = s->dq.s;
-    }
-  o->px = W_LOAD (t[0]);
-  o->py = W_LOAD (t[1]);
-  o->qc = W_LOAD (t[2]);
-  o->qs = W_LOAD (t[3]);
-}
-#endif
-
 KERNEL_FN void KERNEL (shock_batch) (shock_batch *c, int np, solver_body *sb, wide neg_tol, wide ih, int32_t moves)
 {
   KERNEL (lanes) a, b, up;
@@ -110,8 +63,8 @@ KERNEL_FN void KERNEL (shock_batch) (shock_batch *c, int np, solver_body *sb, wi
   wide dvx, dvy;
   wmask on_a;
   int j;
-  KERNEL (shock_gather_v) (sb, c->a, &a);
-  KERNEL (shock_gather_v) (sb, c->b, &b);
+  KERNEL (gather_velocities) (sb, c->a, &a, 0);
+  KERNEL (gather_velocities) (sb, c->b, &b, 0);
   dvx = W_SUB (b.vx, a.vx);
   dvy = W_SUB (b.vy, a.vy);
   for (j = 0; j < np; ++j)
@@ -124,8 +77,8 @@ KERNEL_FN void KERNEL (shock_batch) (shock_batch *c, int np, solver_body *sb, wi
   /* every lane within tolerance: the batch is left (exact on every path) */
   if (!M_ANY (below))
     return;
-  KERNEL (shock_gather_motion) (sb, c->a, &a);
-  KERNEL (shock_gather_motion) (sb, c->b, &b);
+  KERNEL (gather_motion) (sb, c->a, &a);
+  KERNEL (gather_motion) (sb, c->b, &b);
   if (c->gap_at != moves)
     {
       for (j = 0; j < np; ++j)
