@@ -182,15 +182,24 @@ KERNEL_FN void KERNEL (push) (KERNEL (lanes) *a, KERNEL (lanes) *b, const KERNEL
   b->w = W_ADD (b->w, W_MUL (W_MUL (m->ii_b, rb_d), lambda));
 }
 
-/* the separation of point p now, as contact_separation */
-KERNEL_FN wide KERNEL (separation) (const KERNEL (lanes) *a, const KERNEL (lanes) *b, const batch_point *p)
+/* The separation of a point now, as contact_separation, from its arms ra
+ * and rb, normal n and adjusted separation (four lanes each). */
+KERNEL_FN wide KERNEL (separation_of) (const KERNEL (lanes) *a, const KERNEL (lanes) *b, const double *ra_x,
+                                       const double *ra_y, const double *rb_x, const double *rb_y, const double *nx,
+                                       const double *ny, const double *adjusted)
 {
-  wide rax = W_LOAD (p->ra_x), ray = W_LOAD (p->ra_y), rbx = W_LOAD (p->rb_x), rby = W_LOAD (p->rb_y);
+  wide rax = W_LOAD (ra_x), ray = W_LOAD (ra_y), rbx = W_LOAD (rb_x), rby = W_LOAD (rb_y);
   wide dx = W_ADD (W_SUB (b->px, a->px),
                    W_SUB (W_SUB (W_MUL (b->qc, rbx), W_MUL (b->qs, rby)), W_SUB (W_MUL (a->qc, rax), W_MUL (a->qs, ray))));
   wide dy = W_ADD (W_SUB (b->py, a->py),
                    W_SUB (W_ADD (W_MUL (b->qs, rbx), W_MUL (b->qc, rby)), W_ADD (W_MUL (a->qs, rax), W_MUL (a->qc, ray))));
-  return W_ADD (W_ADD (W_MUL (dx, W_LOAD (p->nx)), W_MUL (dy, W_LOAD (p->ny))), W_LOAD (p->adjusted));
+  return W_ADD (W_ADD (W_MUL (dx, W_LOAD (nx)), W_MUL (dy, W_LOAD (ny))), W_LOAD (adjusted));
+}
+
+/* the separation of point p now */
+KERNEL_FN wide KERNEL (separation) (const KERNEL (lanes) *a, const KERNEL (lanes) *b, const batch_point *p)
+{
+  return KERNEL (separation_of) (a, b, p->ra_x, p->ra_y, p->rb_x, p->rb_y, p->nx, p->ny, p->adjusted);
 }
 
 /* contact_lcp2 on every lane, with the inverses set up once per step

@@ -11,15 +11,10 @@
 #include <stdlib.h>
 #endif
 
-/* The separation of point p now, as contact_separation. */
+/* The separation of point p now (contact_batch_kernel.h's separation_of). */
 KERNEL_FN wide KERNEL (shock_separation) (const KERNEL (lanes) *a, const KERNEL (lanes) *b, const shock_lane_point *p)
 {
-  wide rax = W_LOAD (p->ra_x), ray = W_LOAD (p->ra_y), rbx = W_LOAD (p->rb_x), rby = W_LOAD (p->rb_y);
-  wide dx = W_ADD (W_SUB (b->px, a->px),
-                   W_SUB (W_SUB (W_MUL (b->qc, rbx), W_MUL (b->qs, rby)), W_SUB (W_MUL (a->qc, rax), W_MUL (a->qs, ray))));
-  wide dy = W_ADD (W_SUB (b->py, a->py),
-                   W_SUB (W_ADD (W_MUL (b->qs, rbx), W_MUL (b->qc, rby)), W_ADD (W_MUL (a->qs, rax), W_MUL (a->qc, ray))));
-  return W_ADD (W_ADD (W_MUL (dx, W_LOAD (p->nx)), W_MUL (dy, W_LOAD (p->ny))), W_LOAD (p->adjusted));
+  return KERNEL (separation_of) (a, b, p->ra_x, p->ra_y, p->rb_x, p->rb_y, p->nx, p->ny, p->adjusted);
 }
 
 /* shock_gap: the separation over a sub-step where positive, else 0 */
