@@ -479,12 +479,15 @@ int contact_shock_reserve (carom_world *world)
 {
   /* solver_reserve's room; batches as many as a step wanted */
   int32_t want = world->shock_batch_want > world->shock_batch_cap ? world->shock_batch_want : world->shock_batch_cap;
+  size_t scratch = wave_scratch (world->contacts.room_count, world->slot_count);
+  if (scratch > INT32_MAX)
+    return 0;
   return mem_reserve (&world->allocator, (void **) &world->shock_rows, &world->shock_cap,
                       world->contacts.room_count, sizeof (shock_row))
          && mem_reserve (&world->allocator, (void **) &world->shock_points, &world->shock_point_cap,
                          world->contacts.room_points, sizeof (shock_point))
          && mem_reserve (&world->allocator, (void **) &world->shock_scratch, &world->shock_scratch_cap,
-                         (int32_t) wave_scratch (world->contacts.room_count, world->slot_count), sizeof (int32_t))
+                         (int32_t) scratch, sizeof (int32_t))
          && mem_reserve (&world->allocator, (void **) &world->shock_batches, &world->shock_batch_cap, want,
                          sizeof (shock_batch));
 }
