@@ -360,17 +360,30 @@ static void pack_row (shock_batch *c, int lane, const shock_row *r, const solver
     }
 }
 
-/* The waves of the step's n rows and their batches (shock_batch.h).
+/* Where make_waves keeps, in world.shock_scratch, the waves' cursors (after
+ * each row's wave and each body's first free wave) and the rows of more
+ * points (after the cursors of `waves` waves). */
+static int32_t *wave_cursors (carom_world *world)
+{
+  return world->shock_scratch + world->shock_count + (world->slot_count + 1);
+}
+
+static int32_t *wave_more (carom_world *world, int32_t waves)
+{
+  return wave_cursors (world) + WAVE_KINDS * (size_t) waves;
+}
+
+/* The waves of the step's rows and their batches (shock_batch.h).
  * Returns how many waves, or 0 when the rows are to be solved one at a
  * time: there are none, or they need more batches than the room kept,
  * which the next step's reserve makes (either way gives the same bits). */
-static int32_t make_waves (carom_world *world, int32_t n)
+static int32_t make_waves (carom_world *world)
 {
   const solver_body *sb = world->solver_bodies;
   const shock_row *rows = world->shock_rows;
   shock_batch *batches = world->shock_batches;
-  int32_t slots = world->slot_count + 1, inert = world->slot_count;
-  int32_t *wave = world->shock_scratch, *written = wave + n, *at = written + slots;
+  int32_t n = world->shock_count, slots = world->slot_count + 1, inert = world->slot_count;
+  int32_t *wave = world->shock_scratch, *written = wave + n, *at = wave_cursors (world);
   int32_t *more, waves = 0, batch_count = 0, more_count = 0, i, w;
   for (i = 0; i < slots; ++i)
     written[i] = 0;
@@ -388,7 +401,7 @@ static int32_t make_waves (carom_world *world, int32_t n)
       written[up] = w + 1;
       waves = waves > w + 1 ? waves : w + 1;
     }
-  more = at + WAVE_KINDS * (size_t) waves;
+  more = wave_more (world, waves);
   for (i = 0; i < WAVE_KINDS * waves; ++i)
     at[i] = 0;
   for (i = 0; i < n; ++i)
@@ -440,8 +453,7 @@ static int32_t make_waves (carom_world *world, int32_t n)
  * points (make_waves' cursors give where each run ends). */
 static void wave_pass (carom_world *world, double tol, double inv_h, int32_t moves)
 {
-  const int32_t *at = world->shock_scratch + world->shock_count + (world->slot_count + 1);
-  const int32_t *more = at + WAVE_KINDS * (size_t) world->shock_waves;
+  const int32_t *at = wave_cursors (world), *more = wave_more (world, world->shock_waves);
   shock_batch *batches = world->shock_batches;
   void (*solve) (shock_batch *, int32_t, int, solver_body *, double, double, int32_t)
     = world->solver_path == SOLVER_PATH_AVX2 ? shock_batch_solve_avx2 : shock_batch_solve_portable;
@@ -601,7 +613,7 @@ void contact_shock_prepare (carom_world *world, const step_context *ctx)
   /* the rows' contacts go where make_waves later keeps each row's wave */
   world->shock_count = mark_loaded (world, up_dir, order, count, mark, world->shock_scratch);
   make_rows (world, world->shock_scratch, world->shock_count);
-  world->shock_waves = make_waves (world, world->shock_count);
+  world->shock_waves = make_waves (world);
 }
 
 /* The cold start. A pile built at rest has no impulses to warm start from,

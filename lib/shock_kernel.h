@@ -55,18 +55,14 @@ KERNEL_FN void KERNEL (shock_batch) (shock_batch *c, int np, solver_body *sb, wi
   KERNEL (lanes) a, b, up;
   wide zero = W_SET1 (0.0), err[2], x[2];
   wmask below = M_LT (zero, zero), active;
-  wide dvx, dvy;
   wmask on_a;
   int j;
   KERNEL (gather_velocities) (sb, c->a, &a, 0);
   KERNEL (gather_velocities) (sb, c->b, &b, 0);
-  dvx = W_SUB (b.vx, a.vx);
-  dvy = W_SUB (b.vy, a.vy);
   for (j = 0; j < np; ++j)
     {
       const shock_lane_point *p = &c->p[j];
-      wide rel = W_ADD (W_MUL (dvx, W_LOAD (p->nx)), W_MUL (dvy, W_LOAD (p->ny)));
-      err[j] = W_SUB (W_ADD (rel, W_MUL (b.w, W_LOAD (p->rn_b))), W_MUL (a.w, W_LOAD (p->rn_a)));
+      err[j] = KERNEL (speed) (&a, &b, W_LOAD (p->nx), W_LOAD (p->ny), W_LOAD (p->rn_a), W_LOAD (p->rn_b));
       below = M_OR (below, M_LT (err[j], neg_tol));
     }
   /* every lane within tolerance: the batch is left (exact on every path) */
