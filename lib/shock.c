@@ -139,49 +139,65 @@ static int32_t mark_loaded (carom_world *world, vec2 up_dir, const int32_t *orde
   return n;
 }
 
+/* A row's view of contact k: its upper body (the one whose level is the
+ * higher), which alone takes the impulse, the lower one held still. */
+static int lower_is_a (const contact *k, const int32_t *level)
+{
+  return level[k->a] < level[k->b];
+}
+
+/* Contact point p as a row's point with upper body `up`. */
+static void row_point (shock_point *q, const contact_point *p, const solver_body *up, int a_is_lower)
+{
+  double r_up = a_is_lower ? p->rn_b : p->rn_a;
+  q->normal = p->normal, q->ra = p->ra, q->rb = p->rb;
+  q->adjusted = p->adjusted, q->rn_a = p->rn_a, q->rn_b = p->rn_b;
+  q->mass = up->im + up->ii * r_up * r_up;
+  q->ang = a_is_lower ? up->ii * r_up : -(up->ii * r_up);
+}
+
+/* The 2x2 matrix of a block's row, the lower body held still. */
+static void row_matrix (const contact *k, const solver_body *up, int a_is_lower, double *k11, double *k12,
+                        double *k22)
+{
+  double r1 = a_is_lower ? k->points[0].rn_b : k->points[0].rn_a;
+  double r2 = a_is_lower ? k->points[1].rn_b : k->points[1].rn_a;
+  double n12 = v2_dot (k->points[0].normal, k->points[1].normal);
+  *k11 = up->im + up->ii * r1 * r1;
+  *k12 = up->im * n12 + up->ii * r1 * r2;
+  *k22 = up->im + up->ii * r2 * r2;
+}
+
+/* Row r of contact k, its points from `points` on; returns past them. */
+static shock_point *make_row (shock_row *r, const contact *k, const int32_t *level, solver_body *sb,
+                              shock_point *points)
+{
+  int a_is_lower = lower_is_a (k, level);
+  solver_body *up = a_is_lower ? &sb[k->b] : &sb[k->a];
+  int32_t j;
+  r->a = &sb[k->a], r->b = &sb[k->b];
+  r->up = up;
+  r->im_up = a_is_lower ? up->im : -up->im;
+  r->count = k->count;
+  r->kind = k->block ? SHOCK_FACE : k->count;
+  r->gap_at = -1;
+  r->p = points;
+  for (j = 0; j < k->count; ++j)
+    row_point (&r->p[j], &k->points[j], up, a_is_lower);
+  if (k->block)
+    row_matrix (k, up, a_is_lower, &r->k11, &r->k12, &r->k22);
+  return points + k->count;
+}
+
 /* The rows of the n contacts of `list` (mark_loaded's), in level order. */
 static void make_rows (carom_world *world, const int32_t *list, int32_t n)
 {
   const contacts *c = &world->contacts;
-  solver_body *sb = world->solver_bodies;
-  const int32_t *level = world->solver_scratch;
-  shock_row *rows = world->shock_rows;
   shock_point *points = world->shock_points;
-  int32_t i, j;
+  int32_t i;
   for (i = 0; i < n; ++i)
-    {
-      const contact *k = &c->list[list[n - 1 - i]];
-      int a_is_lower = level[k->a] < level[k->b];
-      solver_body *up = a_is_lower ? &sb[k->b] : &sb[k->a];
-      shock_row *r = &rows[i];
-      r->a = &sb[k->a], r->b = &sb[k->b];
-      r->up = up;
-      r->im_up = a_is_lower ? up->im : -up->im;
-      r->count = k->count;
-      r->kind = k->block ? SHOCK_FACE : k->count;
-      r->gap_at = -1;
-      r->p = points;
-      points += k->count;
-      for (j = 0; j < k->count; ++j)
-        {
-          const contact_point *p = &k->points[j];
-          shock_point *q = &r->p[j];
-          double r_up = a_is_lower ? p->rn_b : p->rn_a;
-          q->normal = p->normal, q->ra = p->ra, q->rb = p->rb;
-          q->adjusted = p->adjusted, q->rn_a = p->rn_a, q->rn_b = p->rn_b;
-          q->mass = up->im + up->ii * r_up * r_up;
-          q->ang = a_is_lower ? up->ii * r_up : -(up->ii * r_up);
-        }
-      if (k->block)
-        {
-          double r1 = a_is_lower ? k->points[0].rn_b : k->points[0].rn_a;
-          double r2 = a_is_lower ? k->points[1].rn_b : k->points[1].rn_a;
-          double n12 = v2_dot (k->points[0].normal, k->points[1].normal);
-          r->k11 = up->im + up->ii * r1 * r1;
-          r->k12 = up->im * n12 + up->ii * r1 * r2;
-          r->k22 = up->im + up->ii * r2 * r2;
-        }
-    }
+    points = make_row (&world->shock_rows[i], &c->list[list[n - 1 - i]], world->solver_scratch,
+                       world->solver_bodies, points);
 }
 
 /* The separation of a row's point now, as contact_separation. */
@@ -306,14 +322,14 @@ static void shock_row_pass (shock_row *r, double tol, double inv_h, int32_t move
  * more (solved one at a time). */
 enum { WAVE_TWO = 0, WAVE_ONE = 1, WAVE_MORE = 2, WAVE_KINDS = 3 };
 
-static int wave_kind (const shock_row *r)
+static int wave_kind (const contact *k)
 {
-  return r->count == 2 ? WAVE_TWO : r->count == 1 ? WAVE_ONE : WAVE_MORE;
+  return k->count == 2 ? WAVE_TWO : k->count == 1 ? WAVE_ONE : WAVE_MORE;
 }
 
-/* The room make_waves takes in world.shock_scratch for n rows: each row's
- * wave, the bodies' first waves that may write them, the waves' cursors,
- * and the rows of more points. */
+/* The room contact_shock_prepare takes in world.shock_scratch for n rows:
+ * their contacts (mark_loaded's), each row's wave, the bodies' first waves
+ * that may write them, and the waves' cursors. */
 static size_t wave_scratch (int32_t rows, int32_t slots)
 {
   return 5 * (size_t) rows + WAVE_KINDS + (size_t) (slots + 1);
@@ -335,56 +351,59 @@ static void pack_empty (shock_batch *c, int lane, int32_t inert, int np)
     }
 }
 
-static void pack_row (shock_batch *c, int lane, const shock_row *r, const solver_body *sb)
+/* Lane `lane` of batch c: the row of contact k (of one or two points). */
+static void pack_contact (shock_batch *c, int lane, const contact *k, const int32_t *level, const solver_body *sb)
 {
-  int j, face = r->kind == SHOCK_FACE;
-  c->a[lane] = (int32_t) (r->a - sb);
-  c->b[lane] = (int32_t) (r->b - sb);
-  c->up[lane] = (int32_t) (r->up - sb);
-  c->up_is_a[lane] = r->up == r->a;
-  c->im_up[lane] = r->im_up;
+  int j, a_is_lower = lower_is_a (k, level), face = k->block;
+  const solver_body *up = a_is_lower ? &sb[k->b] : &sb[k->a];
+  c->a[lane] = k->a;
+  c->b[lane] = k->b;
+  c->up[lane] = a_is_lower ? k->b : k->a;
+  c->up_is_a[lane] = !a_is_lower;
+  c->im_up[lane] = a_is_lower ? up->im : -up->im;
   c->face[lane] = face;
-  /* make_rows sets the matrix of blocks alone */
-  c->k11[lane] = face ? r->k11 : 0.0;
-  c->k12[lane] = face ? r->k12 : 0.0;
-  c->k22[lane] = face ? r->k22 : 0.0;
-  for (j = 0; j < r->count; ++j)
+  c->k11[lane] = c->k12[lane] = c->k22[lane] = 0.0;
+  if (face)
+    row_matrix (k, up, a_is_lower, &c->k11[lane], &c->k12[lane], &c->k22[lane]);
+  for (j = 0; j < k->count; ++j)
     {
-      const shock_point *p = &r->p[j];
+      shock_point p;
       shock_lane_point *q = &c->p[j];
-      q->nx[lane] = p->normal.x, q->ny[lane] = p->normal.y;
-      q->ra_x[lane] = p->ra.x, q->ra_y[lane] = p->ra.y, q->rb_x[lane] = p->rb.x, q->rb_y[lane] = p->rb.y;
-      q->adjusted[lane] = p->adjusted, q->rn_a[lane] = p->rn_a, q->rn_b[lane] = p->rn_b;
-      q->mass[lane] = p->mass, q->ang[lane] = p->ang;
+      row_point (&p, &k->points[j], up, a_is_lower);
+      q->nx[lane] = p.normal.x, q->ny[lane] = p.normal.y;
+      q->ra_x[lane] = p.ra.x, q->ra_y[lane] = p.ra.y, q->rb_x[lane] = p.rb.x, q->rb_y[lane] = p.rb.y;
+      q->adjusted[lane] = p.adjusted, q->rn_a[lane] = p.rn_a, q->rn_b[lane] = p.rn_b;
+      q->mass[lane] = p.mass, q->ang[lane] = p.ang;
       q->gap[lane] = 0.0;
     }
 }
 
-/* Where make_waves keeps, in world.shock_scratch, the waves' cursors (after
- * each row's wave and each body's first free wave) and the rows of more
- * points (after the cursors of `waves` waves). */
+/* Where make_waves keeps, in world.shock_scratch, the waves' cursors:
+ * after the rows' contacts, each row's wave and each body's first free
+ * wave. */
 static int32_t *wave_cursors (carom_world *world)
 {
-  return world->shock_scratch + world->shock_count + (world->slot_count + 1);
+  return world->shock_scratch + 2 * (size_t) world->shock_count + (world->slot_count + 1);
 }
 
-static int32_t *wave_more (carom_world *world, int32_t waves)
+/* The waves of the step's rows, the contacts of `list` (mark_loaded's,
+ * world.shock_count of them, in reverse level order), and their batches
+ * (shock_batch.h), packed from the contacts; only the rows of more points
+ * are made rows (world.shock_rows, each wave's after the last one's). Returns how
+ * many waves, or 0 when the rows are to be solved one at a time: there are
+ * none, or they need more batches than the room kept, which the next
+ * step's reserve makes (either way gives the same bits); the caller then
+ * makes every row. */
+static int32_t make_waves (carom_world *world, const int32_t *list)
 {
-  return wave_cursors (world) + WAVE_KINDS * (size_t) waves;
-}
-
-/* The waves of the step's rows and their batches (shock_batch.h).
- * Returns how many waves, or 0 when the rows are to be solved one at a
- * time: there are none, or they need more batches than the room kept,
- * which the next step's reserve makes (either way gives the same bits). */
-static int32_t make_waves (carom_world *world)
-{
-  const solver_body *sb = world->solver_bodies;
-  const shock_row *rows = world->shock_rows;
+  const contacts *c = &world->contacts;
+  solver_body *sb = world->solver_bodies;
+  const int32_t *level = world->solver_scratch;
   shock_batch *batches = world->shock_batches;
+  shock_point *points = world->shock_points;
   int32_t n = world->shock_count, slots = world->slot_count + 1, inert = world->slot_count;
-  int32_t *wave = world->shock_scratch, *written = wave + n, *at = wave_cursors (world);
-  int32_t *more, waves = 0, batch_count = 0, more_count = 0, i, w;
+  int32_t *wave = world->shock_scratch + n, *written = wave + n, *at = wave_cursors (world);
+  int32_t waves = 0, batch_count = 0, more_count = 0, i, w;
   for (i = 0; i < slots; ++i)
     written[i] = 0;
   /* a row goes after the last wave that wrote either of its bodies
@@ -394,29 +413,29 @@ static int32_t make_waves (carom_world *world)
    * as the lower one; so no row writes a body an earlier row read. */
   for (i = 0; i < n; ++i)
     {
-      const shock_row *r = &rows[i];
-      int32_t up = (int32_t) (r->up - sb), low = (int32_t) ((r->up == r->a ? r->b : r->a) - sb);
+      const contact *k = &c->list[list[n - 1 - i]];
+      int a_is_lower = lower_is_a (k, level);
+      int32_t up = a_is_lower ? k->b : k->a, low = a_is_lower ? k->a : k->b;
       w = written[up] > written[low] ? written[up] : written[low];
       wave[i] = w;
       written[up] = w + 1;
       waves = waves > w + 1 ? waves : w + 1;
     }
-  more = wave_more (world, waves);
   for (i = 0; i < WAVE_KINDS * waves; ++i)
     at[i] = 0;
   for (i = 0; i < n; ++i)
-    ++at[WAVE_KINDS * wave[i] + wave_kind (&rows[i])];
+    ++at[WAVE_KINDS * wave[i] + wave_kind (&c->list[list[n - 1 - i]])];
   /* wave by wave, its batches of two-point rows, then of one-point rows;
    * the cursors count lanes from the batches' start (the rows of more
-   * points: places in `more`) */
+   * points: rows from world.shock_rows' start) */
   for (w = 0; w < waves; ++w)
     {
-      int32_t *c = &at[WAVE_KINDS * w], two = c[WAVE_TWO], one = c[WAVE_ONE], extra = c[WAVE_MORE];
-      c[WAVE_TWO] = BATCH_LANES * batch_count;
+      int32_t *cur = &at[WAVE_KINDS * w], two = cur[WAVE_TWO], one = cur[WAVE_ONE], extra = cur[WAVE_MORE];
+      cur[WAVE_TWO] = BATCH_LANES * batch_count;
       batch_count += (two + BATCH_LANES - 1) / BATCH_LANES;
-      c[WAVE_ONE] = BATCH_LANES * batch_count;
+      cur[WAVE_ONE] = BATCH_LANES * batch_count;
       batch_count += (one + BATCH_LANES - 1) / BATCH_LANES;
-      c[WAVE_MORE] = more_count;
+      cur[WAVE_MORE] = more_count;
       more_count += extra;
     }
   if (batch_count > world->shock_batch_cap)
@@ -426,12 +445,13 @@ static int32_t make_waves (carom_world *world)
     }
   for (i = 0; i < n; ++i)
     {
-      int kind = wave_kind (&rows[i]);
+      const contact *k = &c->list[list[n - 1 - i]];
+      int kind = wave_kind (k);
       int32_t place = at[WAVE_KINDS * wave[i] + kind]++;
       if (kind == WAVE_MORE)
-        more[place] = i;
+        points = make_row (&world->shock_rows[place], k, level, sb, points);
       else
-        pack_row (&batches[place / BATCH_LANES], place % BATCH_LANES, &rows[i], sb);
+        pack_contact (&batches[place / BATCH_LANES], place % BATCH_LANES, k, level, sb);
     }
   /* each cursor now ends its run: fill the last batch's unused lanes */
   for (w = 0; w < waves; ++w)
@@ -453,7 +473,7 @@ static int32_t make_waves (carom_world *world)
  * points (make_waves' cursors give where each run ends). */
 static void wave_pass (carom_world *world, double tol, double inv_h, int32_t moves)
 {
-  const int32_t *at = wave_cursors (world), *more = wave_more (world, world->shock_waves);
+  const int32_t *at = wave_cursors (world);
   shock_batch *batches = world->shock_batches;
   void (*solve) (shock_batch *, int32_t, int, solver_body *, double, double, int32_t)
     = world->solver_path == SOLVER_PATH_AVX2 ? shock_batch_solve_avx2 : shock_batch_solve_portable;
@@ -468,7 +488,7 @@ static void wave_pass (carom_world *world, double tol, double inv_h, int32_t mov
       if (one_end > two_end)
         solve (&batches[two_end], one_end - two_end, 1, world->solver_bodies, tol, inv_h, moves);
       for (; m < c[WAVE_MORE]; ++m)
-        shock_row_pass (&world->shock_rows[more[m]], tol, inv_h, moves);
+        shock_row_pass (&world->shock_rows[m], tol, inv_h, moves);
       begin = one_end;
     }
 }
@@ -610,10 +630,10 @@ void contact_shock_prepare (carom_world *world, const step_context *ctx)
 #else
   count = levels (world, &order);
 #endif
-  /* the rows' contacts go where make_waves later keeps each row's wave */
   world->shock_count = mark_loaded (world, up_dir, order, count, mark, world->shock_scratch);
-  make_rows (world, world->shock_scratch, world->shock_count);
-  world->shock_waves = make_waves (world);
+  world->shock_waves = make_waves (world, world->shock_scratch);
+  if (world->shock_waves == 0)
+    make_rows (world, world->shock_scratch, world->shock_count);
 }
 
 /* The cold start. A pile built at rest has no impulses to warm start from,

@@ -21,8 +21,10 @@
 
 struct solver_body;
 
-/* What the pass reads of a contact it may hold, copied once per step in
- * level order (contact_shock_prepare), so the passes stream through it:
+/* What the pass reads of a contact it may hold, copied once per step
+ * (contact_shock_prepare): into a batch's lane for a row of one or two
+ * points, into a row for one of more points or when the rows are solved
+ * one at a time (in level order), so the passes stream through it:
  * which body is the upper one, and its share of the point's effective mass
  * with the lower body held still. A row's points follow those of the row
  * before it in world.shock_points: rows of one or two points (nearly all)

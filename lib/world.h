@@ -39,7 +39,9 @@ struct carom_world {
   double *cold_load;                 /* per slot: the cold start's load (shock.c) */
   int32_t cold_load_cap;
   int32_t shock_count;               /* contacts it may hold this step */
-  struct shock_row *shock_rows;      /* and what it reads of them (shock.c) */
+  struct shock_row *shock_rows;      /* and what it reads of them (shock.c):
+                                        all, or with waves those of more
+                                        points, each wave's in a run */
   int32_t shock_cap;
   struct shock_point *shock_points;  /* the rows' points, in row order */
   int32_t shock_point_cap;
