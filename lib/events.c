@@ -47,7 +47,7 @@ static uint32_t pair_hash (carom_body_id a, carom_body_id b, int32_t sensor)
 
 static int32_t find (const int32_t *table, int32_t base, const touch *old, int32_t mask, const touch *t)
 {
-  uint32_t i = t->hash & (uint32_t) mask;
+  uint32_t i = pair_hash (t->a, t->b, t->sensor) & (uint32_t) mask;
   for (;; i = (i + 1) & (uint32_t) mask)
     {
       int32_t k = table[i] - base;
@@ -164,12 +164,42 @@ static int same_pairs (const touch *old, int32_t old_count, const touch *cur, in
   return 1;
 }
 
+/* The table over the last update's pairs (events.table_base and up). The
+ * table is not cleared for each update: the values an earlier one left
+ * are below this one's base, and so empty; only a table just grown (its
+ * new part unset), or a base that would pass INT32_MAX, starts again from
+ * -1 everywhere. */
+static int32_t *build_table (events *e, const touch *old, int32_t old_count, int32_t *base_out, int32_t *mask_out)
+{
+  int32_t i, base, *table, mask = table_size (old_count) - 1;
+  if (e->table_set != e->table_cap || e->table_base > INT32_MAX - old_count)
+    {
+      for (i = 0; i < e->table_cap; ++i)
+        e->table[i] = -1;
+      e->table_set = e->table_cap;
+      e->table_base = 0;
+    }
+  /* in locals: through the int32_t stores to the table, which might alias
+   * e's fields as far as the compiler knows, every use would reload them */
+  table = e->table, base = e->table_base;
+  for (i = 0; i < old_count; ++i)
+    {
+      uint32_t h = pair_hash (old[i].a, old[i].b, old[i].sensor) & (uint32_t) mask;
+      while (table[h] >= base)
+        h = (h + 1) & (uint32_t) mask;
+      table[h] = base + i;
+    }
+  *base_out = base;
+  *mask_out = mask;
+  return table;
+}
+
 void events_update (carom_world *world)
 {
   events *e = &world->events;
   const contacts *c = &world->contacts;
-  int32_t last = e->cur, now = 1 - e->cur, old_count = e->count[last], mask = table_size (old_count) - 1, i, n;
-  int32_t *table, base;
+  int32_t last = e->cur, now = 1 - e->cur, old_count = e->count[last], mask = 0, base = 0, i, k, n;
+  int32_t *table = NULL;
   touch *old = e->touches[last], *cur = e->touches[now];
   n = contact_touches (world, cur);
   for (i = 0; i < c->sensor_count; ++i)
@@ -189,43 +219,27 @@ void events_update (carom_world *world)
   e->count[now] = n;
   e->event_count = 0;
   e->cur = now;
-  e->hashed[now] = 0;
   if (same_pairs (old, old_count, cur, n))
     return;
-  /* the table is not cleared for each update: the values an earlier one
-   * left are below this one's base, and so empty; only a table just
-   * grown (its new part unset), or a base that would pass INT32_MAX,
-   * starts again from -1 everywhere */
-  if (e->table_set != e->table_cap || e->table_base > INT32_MAX - old_count)
+  /* the pairs come in the order of the contacts, which is mostly last
+   * update's: the old pair after the last one matched is tried first, and
+   * a table over the old pairs is built only when that fails */
+  for (i = 0, k = 0; i < n; ++i)
     {
-      for (i = 0; i < e->table_cap; ++i)
-        e->table[i] = -1;
-      e->table_set = e->table_cap;
-      e->table_base = 0;
-    }
-  /* in locals: through the int32_t stores to the table, which might alias
-   * e's fields as far as the compiler knows, every use would reload them */
-  table = e->table, base = e->table_base;
-  /* the hashes are computed only when a table is built, for the steady
-   * scene that needs none, and this update's are kept for the next */
-  if (!e->hashed[last])
-    for (i = 0; i < old_count; ++i)
-      old[i].hash = pair_hash (old[i].a, old[i].b, old[i].sensor);
-  for (i = 0; i < old_count; ++i)
-    {
-      uint32_t h = old[i].hash & (uint32_t) mask;
-      while (table[h] >= base)
-        h = (h + 1) & (uint32_t) mask;
-      table[h] = base + i;
-      old[i].seen = 0;
-    }
-  for (i = 0; i < n; ++i)
-    {
-      int32_t k;
-      cur[i].hash = pair_hash (cur[i].a, cur[i].b, cur[i].sensor);
-      k = find (table, base, old, mask, &cur[i]);
-      if (k >= 0)
-        old[k].seen = 1;
+      int32_t found = -1;
+      if (k < old_count && old[k].a == cur[i].a && old[k].b == cur[i].b && old[k].sensor == cur[i].sensor)
+        found = k;
+      else
+        {
+          if (!table)
+            table = build_table (e, old, old_count, &base, &mask);
+          found = find (table, base, old, mask, &cur[i]);
+        }
+      if (found >= 0)
+        {
+          old[found].seen = 1;
+          k = found + 1;
+        }
       else
         emit_begin (e, world, &cur[i]);
     }
@@ -237,8 +251,8 @@ void events_update (carom_world *world)
         else
           emit_end (e, &old[i]);
       }
-  e->table_base = base + old_count;
-  e->hashed[now] = 1;
+  if (table)
+    e->table_base = base + old_count;
 }
 
 int32_t carom_world_get_events (const carom_world *world, carom_contact_event *list, int32_t capacity)

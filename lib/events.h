@@ -15,15 +15,13 @@ typedef struct touch {
   int32_t first;      /* the pair's first contact in the list of its
                          update (what a begin event reads), -1 for a sensor */
   int32_t sensor;     /* a is a sensor, b overlaps it */
-  int32_t seen;       /* (as the last update's) touches in this one too */
-  uint32_t hash;      /* pair_hash of a, b and sensor (events.c), once a
-                         table needed it: kept for the update after */
+  int32_t seen;       /* (as the last update's) touches in this one too:
+                         0 when made, set only in the update after */
 } touch;
 
 typedef struct events {
   touch *touches[2];  /* this update's and the last one's, in turn */
   int32_t count[2], cap[2];
-  int32_t hashed[2];  /* their hash fields are set */
   int32_t cur;        /* which is the last update's */
   int32_t *table;     /* open addressing over the last update's: base + its
                          index, and any value below base is an empty slot */
