@@ -78,12 +78,20 @@ static int32_t order_by_level (carom_world *world, int32_t *order)
   return count;
 }
 
+/* Whether contact k's body a is the lower of its two (level order): the
+ * other, upper, one rests on it, and a row of shock propagation moves it
+ * alone. */
+static int lower_is_a (const contact *k, const int32_t *level)
+{
+  return level[k->a] < level[k->b];
+}
+
 /* Whether the normal of a contact of `order` points up from its lower body
  * to its upper one within 60 degrees: the upper one rests on it. */
 static int rests_on (const contact *k, const int32_t *level, vec2 up_dir)
 {
   double lift = v2_dot (k->points[0].normal, up_dir);
-  return (level[k->a] < level[k->b] ? lift : -lift) >= 0.5;
+  return (lower_is_a (k, level) ? lift : -lift) >= 0.5;
 }
 
 /* Touching bodies differ in mass more than this: below it the iterations
@@ -128,7 +136,7 @@ static int32_t mark_loaded (carom_world *world, vec2 up_dir, const int32_t *orde
   for (i = count - 1; i >= 0; --i)
     {
       const contact *k = &c->list[order[i]];
-      int a_is_lower = level[k->a] < level[k->b];
+      int a_is_lower = lower_is_a (k, level);
       if (mark[a_is_lower ? k->b : k->a])
         {
           mark[a_is_lower ? k->a : k->b] = 1;
@@ -137,13 +145,6 @@ static int32_t mark_loaded (carom_world *world, vec2 up_dir, const int32_t *orde
         }
     }
   return n;
-}
-
-/* A row's view of contact k: its upper body (the one whose level is the
- * higher), which alone takes the impulse, the lower one held still. */
-static int lower_is_a (const contact *k, const int32_t *level)
-{
-  return level[k->a] < level[k->b];
 }
 
 /* Contact point p as a row's point with upper body `up`. */
@@ -419,12 +420,15 @@ static int32_t make_waves (carom_world *world, const int32_t *list)
       w = written[up] > written[low] ? written[up] : written[low];
       wave[i] = w;
       written[up] = w + 1;
-      waves = waves > w + 1 ? waves : w + 1;
+      /* no body was written past the last wave, so a row opens at most
+       * one new wave: its counts start from 0 */
+      if (w == waves)
+        {
+          at[WAVE_KINDS * w + WAVE_TWO] = at[WAVE_KINDS * w + WAVE_ONE] = at[WAVE_KINDS * w + WAVE_MORE] = 0;
+          waves = w + 1;
+        }
+      ++at[WAVE_KINDS * w + wave_kind (k)];
     }
-  for (i = 0; i < WAVE_KINDS * waves; ++i)
-    at[i] = 0;
-  for (i = 0; i < n; ++i)
-    ++at[WAVE_KINDS * wave[i] + wave_kind (&c->list[list[n - 1 - i]])];
   /* wave by wave, its batches of two-point rows, then of one-point rows;
    * the cursors count lanes from the batches' start (the rows of more
    * points: rows from world.shock_rows' start) */
@@ -681,7 +685,7 @@ void contact_cold_start (carom_world *world, const step_context *ctx)
   for (i = 0; i < count; ++i)
     {
       const contact *k = &c->list[order[i]];
-      int32_t up = level[k->a] < level[k->b] ? k->b : k->a;
+      int32_t up = lower_is_a (k, level) ? k->b : k->a;
       if (rests_on (k, level, up_dir) && supports[up] >= 0)
         supports[up] = k->cold ? supports[up] + 1 : -1;
     }
@@ -690,7 +694,7 @@ void contact_cold_start (carom_world *world, const step_context *ctx)
   for (i = count - 1; i >= 0; --i)
     {
       contact *k = &c->list[order[i]];
-      int a_is_lower = level[k->a] < level[k->b];
+      int a_is_lower = lower_is_a (k, level);
       int32_t up = a_is_lower ? k->b : k->a, low = a_is_lower ? k->a : k->b;
       double share, lift;
       if (!k->cold || supports[up] <= 0 || !rests_on (k, level, up_dir))
