@@ -67,7 +67,9 @@ typedef struct contact {
                                  step: the solve passes it takes in a
                                  sub-step at most (contact_fine_passes),
                                  else 0 */
-  int32_t batched;            /* solved in a batch this step (contact_batch.c) */
+  int32_t batched;            /* solved in a batch this step (contact_batch.c):
+                                 one past its place in the batches once
+                                 packed */
   int32_t cold;               /* begins resting this step: fresh, near,
                                  neither closing nor leaving fast
                                  (contact_cold_start gives it an impulse) */
@@ -123,6 +125,8 @@ typedef struct contacts {
   int32_t cold_count;    /* contacts marked cold this step */
   int32_t bouncy_count;  /* contacts with restitution this step (contact_prepare) */
   int32_t bouncy_found;  /* contacts with restitution the detection made */
+  int32_t packed;        /* contact_prepare packed the batched contacts'
+                            lanes as it set them up (contact_batch_pack) */
   int32_t room_count;    /* the most contacts and points this step may */
   int32_t room_points;   /* hold: what solver_reserve kept room for */
   int32_t impacts;       /* impacts contact_impacts made this step */

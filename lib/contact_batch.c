@@ -1,6 +1,7 @@
 /* Contacts solved four at a time (contact_batch.h): colouring, packing, the
  * portable kernels and the choice of path. */
 #include "contact_batch.h"
+#include "contact_batch_pack.h"
 
 #include <stddef.h>
 #include <stdio.h>
@@ -47,42 +48,6 @@ static int batchable (const contact *k)
   return k->count >= 1 && k->count <= 2 && k->restitution == 0.0 && !k->fine;
 }
 
-/* Lane `lane` of point j of a batch, unused: every number 0, so it
- * computes impulses of 0. */
-static void pack_point_empty (batch_point *q, int lane)
-{
-  q->nx[lane] = q->ny[lane] = 0.0;
-  q->ra_x[lane] = q->ra_y[lane] = q->rb_x[lane] = q->rb_y[lane] = 0.0;
-  q->adjusted[lane] = 0.0;
-  q->rn_a[lane] = q->rn_b[lane] = q->rt_a[lane] = q->rt_b[lane] = 0.0;
-  q->normal_mass[lane] = q->tangent_mass[lane] = 0.0;
-  q->normal_impulse[lane] = q->tangent_impulse[lane] = 0.0;
-  q->total[lane] = 0.0;
-}
-
-/* Lane `lane` of point j of a batch: contact point p. Not push_impulse: a
- * sub-step's first push-out pass starts from none (first) and stores it
- * before any pass reads it. */
-static void pack_point (batch_point *restrict q, int lane, const contact_point *restrict p)
-{
-  q->nx[lane] = p->normal.x;
-  q->ny[lane] = p->normal.y;
-  q->ra_x[lane] = p->ra.x;
-  q->ra_y[lane] = p->ra.y;
-  q->rb_x[lane] = p->rb.x;
-  q->rb_y[lane] = p->rb.y;
-  q->adjusted[lane] = p->adjusted;
-  q->rn_a[lane] = p->rn_a;
-  q->rn_b[lane] = p->rn_b;
-  q->rt_a[lane] = p->rt_a;
-  q->rt_b[lane] = p->rt_b;
-  q->normal_mass[lane] = p->normal_mass;
-  q->tangent_mass[lane] = p->tangent_mass;
-  q->normal_impulse[lane] = p->normal_impulse;
-  q->tangent_impulse[lane] = p->tangent_impulse;
-  q->total[lane] = p->total_impulse; /* an impact's (contact_impacts) */
-}
-
 /* An unused lane of batch c: the inert body on both sides and every number
  * 0, so it computes impulses of 0 and moves nothing (as pack_lane, every
  * field the kernels read). */
@@ -100,60 +65,6 @@ static void pack_empty_lane (contact_batch *c, int lane, int32_t inert, int poin
     }
   for (j = 0; j < points; ++j)
     pack_point_empty (BATCH_POINT (c, j), lane);
-}
-
-/* Lane `lane` of batch c: contact k (index `index`). Every field of the
- * lane the kernels read is written (the batches are not cleared between
- * steps): the second point's only where the batch has two (points 2). */
-static void pack_lane (contact_batch *restrict c, int lane, const contact *restrict k, int32_t index,
-                       const solver_body *restrict sb, int points)
-{
-  const solver_body *a = &sb[k->a], *b = &sb[k->b];
-  c->a[lane] = k->a;
-  c->b[lane] = k->b;
-  c->contact[lane] = index;
-  c->im_a[lane] = a->im;
-  c->ii_a[lane] = a->ii;
-  c->im_b[lane] = b->im;
-  c->ii_b[lane] = b->ii;
-  c->friction[lane] = k->friction;
-  c->slop[lane] = k->slop;
-  c->max_push[lane] = k->max_push;
-  pack_point (&c->p0, lane, &k->points[0]);
-  /* a batch of one-point lanes has no room for the rest */
-  if (points == 1)
-    return;
-  if (k->block)
-    {
-      double det = k->k11 * k->k22 - k->k12 * k->k12;
-      /* contact_lcp2's first case, as the inverse of K when it has one */
-      int invertible = det > 1e-12 * k->k11 * k->k22;
-      c->two.k11[lane] = k->k11;
-      c->two.k12[lane] = k->k12;
-      c->two.k22[lane] = k->k22;
-      c->two.pair[lane] = 1.0;
-      c->two.i11[lane] = invertible ? k->k22 / det : 0.0;
-      c->two.i12[lane] = invertible ? -k->k12 / det : 0.0;
-      c->two.i22[lane] = invertible ? k->k11 / det : 0.0;
-      c->two.block[lane] = invertible ? 1.0 : 0.0;
-    }
-  else
-    {
-      c->two.k11[lane] = c->two.k12[lane] = c->two.k22[lane] = c->two.pair[lane] = 0.0;
-      c->two.i11[lane] = c->two.i12[lane] = c->two.i22[lane] = c->two.block[lane] = 0.0;
-    }
-  if (k->count == 2)
-    pack_point (&c->two.p1, lane, &k->points[1]);
-  else
-    pack_point_empty (&c->two.p1, lane);
-}
-
-/* Batch number `index` of the step's, `twos` of those before it of
- * two-point lanes (the rest of one-point lanes, CONTACT_BATCH_SIZE). */
-static contact_batch *batch_at (contact_batch *batches, int32_t index, int32_t twos)
-{
-  return (contact_batch *) ((char *) batches + (size_t) index * CONTACT_BATCH_SIZE (1)
-                            + (size_t) twos * (CONTACT_BATCH_SIZE (2) - CONTACT_BATCH_SIZE (1)));
 }
 
 /* The key a contact is packed by: its colour's two-point contacts, then its
@@ -178,18 +89,20 @@ ALWAYS_INLINE void colour_contact (contact *ct, int32_t i, int pass, int ma, int
     }
 }
 
-void contact_batch_prepare (carom_world *world, const step_context *ctx)
+void contact_batch_plan (carom_world *world, const step_context *ctx)
 {
   contacts *c = &world->contacts;
   const solver_body *sb = world->solver_bodies;
   uint32_t *used = world->colour_used;
-  /* keys: each contact's pack_key, -1 when it is not batched */
-  int32_t *keys = world->batch_scratch, *order = keys + c->count, *end = order + c->count;
+  batch_plan p = plan_of (world);
+  int32_t *keys = p.keys, *order = p.order, *end = p.end;
   /* the contacts the second colouring takes, in list order, in the room
-   * `order` has until the counting sort */
+   * `order` has until the layout */
   int32_t *apart = order, apart_count = 0;
-  int32_t i, k, n = 0, fine_count = 0, fine_passes = 0;
-  (void) ctx;
+  int32_t i, k, n = 0;
+  /* how far a body falls in the step with nothing to hold it
+   * (contact_fine_passes) */
+  const double fall = 0.5 * ctx->accel * ctx->dt * ctx->dt;
   for (i = 0; i <= 4 * CONSTRAINT_COLOURS; ++i)
     end[i] = 0;
   for (i = 0; i < world->slot_count; ++i)
@@ -205,6 +118,7 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
       contact *ct = &c->list[i];
       keys[i] = -1;
       ct->batched = 0;
+      ct->fine = contact_fine_passes (fall, ct->slop);
       if (!batchable (ct))
         continue;
       if (sb[ct->a].moves == MOVES_DYNAMIC && sb[ct->b].moves == MOVES_DYNAMIC)
@@ -228,11 +142,11 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
   /* Where each contact goes: a colour's batches hold its two-point
    * contacts, then its one-point ones, each kind in list order, four to a
    * batch, the colour's first at a batch of its own. Place p is lane p % 4
-   * of batch p / 4; `end` becomes each kind's next place, and `order` (free
-   * until the rest are listed below) tells each batch where it lies. The
-   * contacts are then packed in list order, read one after the other as
-   * their set-up left them: packed in the colours' order, the reads
-   * jumped through the list and waited on memory (docs/performance.md). */
+   * of batch p / 4; `end` becomes each kind's next place, and `order` tells
+   * each batch where it lies. The contacts are packed in list order
+   * (contact_batch_pack), each as its set-up leaves it: packed in the
+   * colours' order, the reads jumped through the list and waited on memory
+   * (docs/performance.md). */
   {
     int32_t place = 0, twos = 0;
     for (k = 0; k < 2 * CONSTRAINT_COLOURS; ++k)
@@ -253,19 +167,20 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
           }
         place += (lanes + BATCH_LANES - 1) / BATCH_LANES * BATCH_LANES;
       }
-    for (i = 0; i < c->count; ++i)
-      if (keys[i] >= 0)
-        {
-          int32_t at = end[keys[i] + 1]++;
-          contact_batch *to = batch_at (world->batches, at / BATCH_LANES, order[at / BATCH_LANES]);
-          pack_lane (to, at % BATCH_LANES, &c->list[i], i, sb, to->points);
-        }
   }
   world->batch_count = n;
-  /* the rest, in list order, for contact_solver.c's passes (in the room
-   * the keys took, each read before it is written over), and the fine ones
-   * among them, in the same order, for the passes that solve those alone
-   * (in the room the packing order took) */
+}
+
+/* The rest, in list order, for contact_solver.c's passes (in the room the
+ * keys took, each read before it is written over), and the fine ones among
+ * them, in the same order, for the passes that solve those alone (in the
+ * room the batches' order took: the lanes are packed). */
+static void contact_batch_finish (carom_world *world)
+{
+  contacts *c = &world->contacts;
+  batch_plan p = plan_of (world);
+  int32_t *keys = p.keys, *order = p.order;
+  int32_t i, k, fine_count = 0, fine_passes = 0;
   for (i = 0, k = 0; i < c->count; ++i)
     if (keys[i] < 0)
       {
@@ -281,6 +196,29 @@ void contact_batch_prepare (carom_world *world, const step_context *ctx)
   c->fine_rest = order;
   c->fine_rest_count = fine_count;
   c->fine_passes = fine_passes;
+}
+
+void contact_batch_prepare (carom_world *world, const step_context *ctx)
+{
+  contacts *c = &world->contacts;
+  int32_t i;
+  if (!c->packed)
+    {
+      contact_batch_plan (world, ctx);
+      for (i = 0; i < c->count; ++i)
+        if (c->list[i].batched)
+          contact_batch_pack (world, i);
+    }
+  else if (c->cold_count > 0)
+    {
+      /* the cold start gave these their impulses after they were packed */
+      const int32_t *order = plan_of (world).order;
+      for (i = 0; i < c->count; ++i)
+        if (c->list[i].batched && c->list[i].cold)
+          pack_at (world, order, i);
+    }
+  c->packed = 0;
+  contact_batch_finish (world);
 }
 
 void contact_batch_store (carom_world *world)

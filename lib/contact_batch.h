@@ -100,8 +100,17 @@ int solver_path_available (solver_path path);
 int32_t constraint_colour (uint32_t *used_a, uint32_t *used_b);
 
 /* Colour the contacts contact_prepare set up and pack the batchable ones
- * (marking them contact.batched); the rest stay for contact_solver.c. */
+ * (marking them contact.batched); the rest stay for contact_solver.c.
+ * Where contact_prepare packed them as it set them up (contacts.packed),
+ * only the lanes of those the cold start changed are packed again. */
 void contact_batch_prepare (struct carom_world *world, const step_context *ctx);
+/* Its parts, for a set-up that packs each contact while its points are at
+ * hand: the colouring and the batches' layout (contact.fine too, which
+ * decides what is batched; contact.batched marks those that are), then
+ * contact i's lane, contact_prepare having set it up, the contacts taken
+ * in list order. */
+void contact_batch_plan (struct carom_world *world, const step_context *ctx);
+/* (contact_batch_pack is contact_batch_pack.h's) */
 /* The passes of contact_solver.h over the batches. */
 void contact_batch_warm_start (struct carom_world *world);
 void contact_batch_solve (struct carom_world *world, const step_context *ctx);

@@ -29,6 +29,7 @@
  * from the bodies' motion since then, so no geometry is recomputed. */
 #include "contact_solver.h"
 
+#include "contact_batch_pack.h"
 #include "impact.h"
 #include "world.h"
 
@@ -154,18 +155,27 @@ void contact_prepare (carom_world *world, const step_context *ctx)
   contacts *c = &world->contacts;
   c->cold_count = 0;
   c->bouncy_count = 0;
+  /* Without a bouncy contact the impacts have nothing to do, and what
+   * comes between the set-up and the batches changes no point but the
+   * cold start's impulses: the batches are laid out first, and each
+   * batched contact packed as it is set up, while its points are at hand
+   * (contact_batch_prepare packs the cold ones again). The count of the
+   * detection is a hint; a bouncy contact found after all undoes it. */
+  c->packed = c->bouncy_found == 0;
+  if (c->packed)
+    contact_batch_plan (world, ctx);
   contact_prepare_from (world, ctx, 0);
+  if (c->bouncy_count > 0)
+    c->packed = 0;
 }
 
 void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t first)
 {
   contacts *c = &world->contacts;
   solver_body *sb = world->solver_bodies;
-  /* how far a body falls in the step with nothing to hold it
-   * (contact_fine_passes) */
-  const double fall = 0.5 * ctx->accel * ctx->dt * ctx->dt;
   const double dt = ctx->dt, threshold = ctx->restitution_threshold;
   int32_t i, j, bouncy = 0, cold = 0;
+  int pack = c->packed;
   for (i = first; i < c->count; ++i)
     {
       contact *k = &c->list[i];
@@ -189,7 +199,6 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
       k->event_round = -1;
       k->touch_at = -1.0;
       bouncy += k->restitution > 0.0;
-      k->fine = contact_fine_passes (fall, k->slop);
       for (j = 0; j < count; ++j)
         {
           contact_point *p = &points[j];
@@ -228,6 +237,8 @@ void contact_prepare_from (carom_world *world, const step_context *ctx, int32_t 
       pair_matrix_of (k, pb.im, pb.ii_a, pb.ii_b);
       k->cold = begins_resting (k, ctx);
       cold += k->cold;
+      if (pack && k->batched)
+        contact_batch_pack (world, i);
     }
   c->bouncy_count += bouncy;
   c->cold_count += cold;
