@@ -624,8 +624,24 @@ EOF
   instructions per step as Box2D v3's. The contact graph is coloured and
   each colour solved four contacts at a time, in double precision, with
   AVX2 where the CPU has it (lib/contact_batch.c; the portable path gives
-  the same bits); they do what Box2D v3's do not: the exact 2x2 solve of
-  two-point faces, a push-out on separate pseudo-velocities (split
+  the same bits), and with AVX-512's registers on a CPU that has them, as
+  this one does (lib/contact_batch_avx512.c: the same four lanes, but 32
+  registers instead of 16 and masks in mask registers; the AVX2 kernels
+  keep a quarter of their values on the stack for want of registers, 172
+  of the 662 instructions of the solve pass reading or writing it, the
+  AVX-512 build of the same source 43 of 572; the same bits;
+  `tools/compare-bench` against the AVX2 kernels: the pyramid 0.987, 12
+  pairs of `warmup=60 steps=3000`, the settled rain 0.981, 10 pairs of
+  `warmup=450 steps=600`, the rain over the bench window 0.911, 20 pairs).
+  Eight lanes of double to an AVX-512 register were measured too, as a
+  build whose batches have eight lanes on every path (the same bits):
+  against four lanes on AVX2, 0.950 on the pyramid and 0.954 on the rain
+  (16 pairs each); but the AVX2 kernels, holding each eight-lane value in
+  two registers, then spill more (607 of 1464 instructions of the solve
+  pass on the stack) and took 4.5% and 5.6% more time: a gain on the CPUs
+  with AVX-512 for a loss on those without, not taken. Batches as wide as
+  each world's path would have both. The passes do what Box2D v3's do
+  not: the exact 2x2 solve of two-point faces, a push-out on separate pseudo-velocities (split
   impulses, so position correction adds no energy; its first pass of a
   sub-step rides in the same walk over the batches as the last solve pass,
   so the batches are walked three times a sub-step, as Box2D v3 walks its

@@ -267,23 +267,28 @@ int solver_path_available (solver_path path)
   if (path == SOLVER_PATH_PORTABLE)
     return 1;
 #ifdef HAVE_AVX2_PATH
+  __builtin_cpu_init ();
   if (path == SOLVER_PATH_AVX2)
-    {
-      __builtin_cpu_init ();
-      return __builtin_cpu_supports ("avx2") != 0;
-    }
+    return __builtin_cpu_supports ("avx2") != 0;
+  if (path == SOLVER_PATH_AVX512)
+    return __builtin_cpu_supports ("avx2") && __builtin_cpu_supports ("avx512f")
+           && __builtin_cpu_supports ("avx512vl");
 #endif
   return 0;
 }
 
 solver_path solver_path_best (void)
 {
+  if (solver_path_available (SOLVER_PATH_AVX512))
+    return SOLVER_PATH_AVX512;
   return solver_path_available (SOLVER_PATH_AVX2) ? SOLVER_PATH_AVX2 : SOLVER_PATH_PORTABLE;
 }
 
 void contact_batch_warm_start (carom_world *world)
 {
-  if (world->solver_path == SOLVER_PATH_AVX2)
+  if (world->solver_path == SOLVER_PATH_AVX512)
+    contact_batch_warm_start_avx512 (world->batches, world->batch_count, world->solver_bodies);
+  else if (world->solver_path == SOLVER_PATH_AVX2)
     contact_batch_warm_start_avx2 (world->batches, world->batch_count, world->solver_bodies);
   else
     contact_batch_warm_start_portable (world->batches, world->batch_count, world->solver_bodies);
@@ -291,7 +296,9 @@ void contact_batch_warm_start (carom_world *world)
 
 void contact_batch_solve (carom_world *world, const step_context *ctx)
 {
-  if (world->solver_path == SOLVER_PATH_AVX2)
+  if (world->solver_path == SOLVER_PATH_AVX512)
+    contact_batch_solve_avx512 (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h);
+  else if (world->solver_path == SOLVER_PATH_AVX2)
     contact_batch_solve_avx2 (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h);
   else
     contact_batch_solve_portable (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h);
@@ -299,7 +306,9 @@ void contact_batch_solve (carom_world *world, const step_context *ctx)
 
 void contact_batch_push_out (carom_world *world, const step_context *ctx, int first)
 {
-  if (world->solver_path == SOLVER_PATH_AVX2)
+  if (world->solver_path == SOLVER_PATH_AVX512)
+    contact_batch_push_out_avx512 (world->batches, world->batch_count, world->solver_bodies, ctx->push_rate, first);
+  else if (world->solver_path == SOLVER_PATH_AVX2)
     contact_batch_push_out_avx2 (world->batches, world->batch_count, world->solver_bodies, ctx->push_rate, first);
   else
     contact_batch_push_out_portable (world->batches, world->batch_count, world->solver_bodies, ctx->push_rate,
@@ -308,7 +317,10 @@ void contact_batch_push_out (carom_world *world, const step_context *ctx, int fi
 
 void contact_batch_solve_push_out (carom_world *world, const step_context *ctx)
 {
-  if (world->solver_path == SOLVER_PATH_AVX2)
+  if (world->solver_path == SOLVER_PATH_AVX512)
+    contact_batch_solve_push_out_avx512 (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h,
+                                         ctx->push_rate);
+  else if (world->solver_path == SOLVER_PATH_AVX2)
     contact_batch_solve_push_out_avx2 (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h,
                                        ctx->push_rate);
   else

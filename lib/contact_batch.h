@@ -6,10 +6,11 @@
  * colour can be solved in any order, or at once. Each colour is packed into
  * batches of four lanes (structure of arrays) that one kernel solves lane by
  * lane: the portable kernel in contact_batch.c, and the same kernel on AVX2
- * registers in contact_batch_avx2.c, chosen at run time from the CPU. Both
- * are one source (contact_batch_kernel.h) over the same operations in the
- * same order, with no fused or approximate arithmetic, so they give the same
- * bits. Bodies that do not move (static, asleep) take no colour: lanes only
+ * registers in contact_batch_avx2.c and with AVX-512's (32 registers of
+ * four doubles, masks in mask registers) in contact_batch_avx512.c, chosen
+ * at run time from the CPU. All are one source (contact_batch_kernel.h)
+ * over the same operations in the same order, with no fused or approximate
+ * arithmetic, so they give the same bits. Bodies that do not move (static, asleep) take no colour: lanes only
  * read them, and unused lanes point at an inert body that takes nothing.
  * Contacts with such a body are coloured apart and solved after the others
  * (the ground last, so nothing undoes it within a pass). Within a colour,
@@ -40,7 +41,8 @@ struct solver_body;
  * is left over (solved one at a time, after the batches). */
 #define CONSTRAINT_COLOURS 32
 
-typedef enum solver_path { SOLVER_PATH_PORTABLE = 0, SOLVER_PATH_AVX2 = 1 } solver_path;
+typedef enum solver_path { SOLVER_PATH_PORTABLE = 0, SOLVER_PATH_AVX2 = 1, SOLVER_PATH_AVX512 = 2 } solver_path;
+#define SOLVER_PATHS 3
 
 typedef struct batch_point {
   double nx[BATCH_LANES], ny[BATCH_LANES];
@@ -136,5 +138,10 @@ void contact_batch_solve_push_out_portable (contact_batch *c, int32_t n, struct 
                                             double push_rate);
 void contact_batch_solve_push_out_avx2 (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h,
                                         double push_rate);
+void contact_batch_warm_start_avx512 (contact_batch *c, int32_t n, struct solver_body *sb);
+void contact_batch_solve_avx512 (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h);
+void contact_batch_push_out_avx512 (contact_batch *c, int32_t n, struct solver_body *sb, double push_rate, int first);
+void contact_batch_solve_push_out_avx512 (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h,
+                                          double push_rate);
 
 #endif

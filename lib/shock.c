@@ -480,7 +480,9 @@ static void wave_pass (carom_world *world, double tol, double inv_h, int32_t mov
   const int32_t *at = wave_cursors (world);
   shock_batch *batches = world->shock_batches;
   void (*solve) (shock_batch *, int32_t, int, solver_body *, double, double, int32_t)
-    = world->solver_path == SOLVER_PATH_AVX2 ? shock_batch_solve_avx2 : shock_batch_solve_portable;
+    = world->solver_path == SOLVER_PATH_AVX512 ? shock_batch_solve_avx512
+      : world->solver_path == SOLVER_PATH_AVX2 ? shock_batch_solve_avx2
+                                               : shock_batch_solve_portable;
   int32_t w, begin = 0, m = 0;
   for (w = 0; w < world->shock_waves; ++w)
     {

@@ -85,5 +85,7 @@ void shock_batch_solve_portable (shock_batch *c, int32_t n, int points, struct s
                                  double inv_h, int32_t moves);
 void shock_batch_solve_avx2 (shock_batch *c, int32_t n, int points, struct solver_body *sb, double tol,
                              double inv_h, int32_t moves);
+void shock_batch_solve_avx512 (shock_batch *c, int32_t n, int points, struct solver_body *sb, double tol,
+                               double inv_h, int32_t moves);
 
 #endif

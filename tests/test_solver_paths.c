@@ -166,11 +166,11 @@ static void test_constraint_colour_takes_the_first_free (void **state)
 /* The same pile on every path the CPU has: the same bits at every step. */
 static void test_every_path_gives_the_same_bits (void **state)
 {
-  const int paths[] = { SOLVER_PATH_PORTABLE, SOLVER_PATH_AVX2 };
-  uint64_t hash[2][200];
-  int p, step, ran = 0;
+  const int paths[SOLVER_PATHS] = { SOLVER_PATH_PORTABLE, SOLVER_PATH_AVX2, SOLVER_PATH_AVX512 };
+  uint64_t hash[SOLVER_PATHS][200];
+  int p, step, ran = 0, q;
   (void) state;
-  for (p = 0; p < 2; ++p)
+  for (p = 0; p < SOLVER_PATHS; ++p)
     {
       carom_world *w;
       if (!solver_path_available ((solver_path) paths[p]))
@@ -188,14 +188,19 @@ static void test_every_path_gives_the_same_bits (void **state)
       carom_world_destroy (w);
       ++ran;
     }
-  if (ran == 2)
+  for (q = 1; q < ran; ++q)
     for (step = 0; step < 200; ++step)
-      if (hash[0][step] != hash[1][step])
-        fail_msg ("the AVX2 path differs from the portable one from step %d", step);
+      if (hash[0][step] != hash[q][step])
+        fail_msg ("path %d of those this CPU has differs from the portable one from step %d", q, step);
   /* the default is the best path */
   {
     carom_world *w = pile ();
     assert_int_equal (w->solver_path, (int) solver_path_best ());
+    /* the best is the last of the paths the CPU has: AVX-512 over AVX2
+     * over the portable kernels */
+    for (q = SOLVER_PATHS - 1; !solver_path_available ((solver_path) q); --q)
+      ;
+    assert_int_equal (w->solver_path, q);
     assert_false (world_set_solver_path (w, 99));
     carom_world_destroy (w);
   }
@@ -275,20 +280,20 @@ static carom_world *columns (carom_narrow_phase narrow)
  * and so solves its rows one at a time. With either narrow phase. */
 static void test_shock_waves_keep_the_level_order (void **state)
 {
-  const int paths[] = { SOLVER_PATH_PORTABLE, SOLVER_PATH_AVX2 };
+  const int paths[SOLVER_PATHS] = { SOLVER_PATH_PORTABLE, SOLVER_PATH_AVX2, SOLVER_PATH_AVX512 };
   int p, narrow, more_anywhere = 0;
   (void) state;
-  for (p = 0; p < 4; ++p)
+  for (p = 0; p < 2 * SOLVER_PATHS; ++p)
     {
       carom_world *waves, *rows;
       int32_t step, waved = 0, most_waves = 0, rows_alone = 0, more = 0;
-      narrow = p / 2 ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
-      if (!solver_path_available ((solver_path) paths[p % 2]))
+      narrow = p / SOLVER_PATHS ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
+      if (!solver_path_available ((solver_path) paths[p % SOLVER_PATHS]))
         continue;
       waves = columns ((carom_narrow_phase) narrow);
       rows = columns ((carom_narrow_phase) narrow);
-      assert_true (world_set_solver_path (waves, paths[p % 2]));
-      assert_true (world_set_solver_path (rows, paths[p % 2]));
+      assert_true (world_set_solver_path (waves, paths[p % SOLVER_PATHS]));
+      assert_true (world_set_solver_path (rows, paths[p % SOLVER_PATHS]));
       for (step = 0; step < 300; ++step)
         {
           int32_t i;
@@ -297,7 +302,7 @@ static void test_shock_waves_keep_the_level_order (void **state)
           assert_status (carom_world_update (rows, 1.0 / 60), CAROM_OK);
           if (world_state_hash (waves) != world_state_hash (rows))
             fail_msg ("path %d, narrow phase %d: the waves differ from the rows one at a time at step %d",
-                      paths[p % 2], narrow, (int) step);
+                      paths[p % SOLVER_PATHS], narrow, (int) step);
           assert_int_equal (rows->shock_waves, 0);
           /* a row's upper body rests on its lower one: the normal (from a
            * to b) points up to it within 60 degrees (the world that solves
@@ -320,7 +325,7 @@ static void test_shock_waves_keep_the_level_order (void **state)
        * other world solved its rows one at a time */
       printf ("path %d, narrow phase %d: %d steps in waves (at most %d), %d rows of more points, %d steps one at a "
               "time\n",
-              paths[p % 2], narrow, (int) waved, (int) most_waves, (int) more, (int) rows_alone);
+              paths[p % SOLVER_PATHS], narrow, (int) waved, (int) most_waves, (int) more, (int) rows_alone);
       assert_true (waved > 250 && most_waves >= 6 && rows_alone > 250);
       more_anywhere += more;
       carom_world_destroy (waves);
