@@ -373,7 +373,9 @@ libbox2d-dev $(pkgv libbox2d-dev) (Debian packages)${B3_PEER}.
   flags). Debian's Chipmunk is built **without NDEBUG** (it prints "Debug Enabled":
   its runtime assertions are on), which costs it some speed. Box2D v3 is built
   from its source tree by its own CMake in Release (\`-O3 -DNDEBUG\`, its default
-  SSE2 code, AVX2 off) and linked statically.
+  SSE2 code, AVX2 off) and linked statically. carom's batch kernels are
+  those of the best path the CPU has (AVX-512's registers on this one; the
+  same bits on every path, docs/reliability.md).
 * Settings: carom with its defaults (substeps 4, iterations 1, continuous
   collision on; other settings below). Chipmunk: iterations 10, collision slop 0.01 (its default 0.1 is meant
   for pixel-sized bodies), no sleeping (its default), bounding-box tree. Box2D:
@@ -531,7 +533,9 @@ pyramid for 120 steps, rain (2000) for 300 steps, chains for $CHAIN_ST steps fro
 of the instructions executed inside carom_world_update; static functions inlined
 by the compiler count in their caller (drift and substep in carom_world_update). The
 broad phase's own share is broadphase_update's less the narrow phase it calls
-(on_pair). Instruction counts do not show cache misses. Raw profiles:
+(on_pair). Instruction counts do not show cache misses; valgrind runs no
+AVX-512 code, so the batch kernels counted are the AVX2 ones (the same
+bits, a few more instructions). Raw profiles:
 \`$B/callgrind.*.out\` and \`$B/profile-*.txt\` (not in git).
 
 EOF
