@@ -258,15 +258,11 @@ typedef char solver_body_layout[(offsetof (solver_body, v) == 0 && offsetof (sol
                                     ? 1
                                     : -1];
 
-#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
-#define HAVE_AVX2_PATH 1
-#endif
-
 int solver_path_available (solver_path path)
 {
   if (path == SOLVER_PATH_PORTABLE)
     return 1;
-#ifdef HAVE_AVX2_PATH
+#ifdef BATCH_X86_KERNELS
   __builtin_cpu_init ();
   if (path == SOLVER_PATH_AVX2)
     return __builtin_cpu_supports ("avx2") != 0;
@@ -284,48 +280,42 @@ solver_path solver_path_best (void)
   return solver_path_available (SOLVER_PATH_AVX2) ? SOLVER_PATH_AVX2 : SOLVER_PATH_PORTABLE;
 }
 
+const batch_kernels *batch_kernels_of (solver_path path)
+{
+#ifdef BATCH_X86_KERNELS
+  if (path == SOLVER_PATH_AVX512)
+    return &batch_kernels_avx512;
+  if (path == SOLVER_PATH_AVX2)
+    return &batch_kernels_avx2;
+#else
+  (void) path;
+#endif
+  return &batch_kernels_portable;
+}
+
 void contact_batch_warm_start (carom_world *world)
 {
-  if (world->solver_path == SOLVER_PATH_AVX512)
-    contact_batch_warm_start_avx512 (world->batches, world->batch_count, world->solver_bodies);
-  else if (world->solver_path == SOLVER_PATH_AVX2)
-    contact_batch_warm_start_avx2 (world->batches, world->batch_count, world->solver_bodies);
-  else
-    contact_batch_warm_start_portable (world->batches, world->batch_count, world->solver_bodies);
+  batch_kernels_of ((solver_path) world->solver_path)->warm_start (world->batches, world->batch_count,
+                                                                    world->solver_bodies);
 }
 
 void contact_batch_solve (carom_world *world, const step_context *ctx)
 {
-  if (world->solver_path == SOLVER_PATH_AVX512)
-    contact_batch_solve_avx512 (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h);
-  else if (world->solver_path == SOLVER_PATH_AVX2)
-    contact_batch_solve_avx2 (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h);
-  else
-    contact_batch_solve_portable (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h);
+  batch_kernels_of ((solver_path) world->solver_path)->solve (world->batches, world->batch_count,
+                                                               world->solver_bodies, ctx->inv_h);
 }
 
 void contact_batch_push_out (carom_world *world, const step_context *ctx, int first)
 {
-  if (world->solver_path == SOLVER_PATH_AVX512)
-    contact_batch_push_out_avx512 (world->batches, world->batch_count, world->solver_bodies, ctx->push_rate, first);
-  else if (world->solver_path == SOLVER_PATH_AVX2)
-    contact_batch_push_out_avx2 (world->batches, world->batch_count, world->solver_bodies, ctx->push_rate, first);
-  else
-    contact_batch_push_out_portable (world->batches, world->batch_count, world->solver_bodies, ctx->push_rate,
-                                     first);
+  batch_kernels_of ((solver_path) world->solver_path)->push_out (world->batches, world->batch_count,
+                                                                  world->solver_bodies, ctx->push_rate, first);
 }
 
 void contact_batch_solve_push_out (carom_world *world, const step_context *ctx)
 {
-  if (world->solver_path == SOLVER_PATH_AVX512)
-    contact_batch_solve_push_out_avx512 (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h,
-                                         ctx->push_rate);
-  else if (world->solver_path == SOLVER_PATH_AVX2)
-    contact_batch_solve_push_out_avx2 (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h,
-                                       ctx->push_rate);
-  else
-    contact_batch_solve_push_out_portable (world->batches, world->batch_count, world->solver_bodies, ctx->inv_h,
-                                           ctx->push_rate);
+  batch_kernels_of ((solver_path) world->solver_path)->solve_push_out (world->batches, world->batch_count,
+                                                                        world->solver_bodies, ctx->inv_h,
+                                                                        ctx->push_rate);
 }
 
 /* ------------------------------------------------- the portable kernels */
@@ -387,3 +377,7 @@ static inline int m_any (wmask m) { return m.l[0] | m.l[1] | m.l[2] | m.l[3]; }
 
 #include "contact_batch_kernel.h"
 #include "shock_kernel.h"
+
+const batch_kernels batch_kernels_portable
+    = { contact_batch_warm_start_portable, contact_batch_solve_portable, contact_batch_push_out_portable,
+        contact_batch_solve_push_out_portable, shock_batch_solve_portable };

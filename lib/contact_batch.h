@@ -126,22 +126,32 @@ void contact_batch_solve_push_out (struct carom_world *world, const step_context
  * next step's warm start and for carom_world_get_contacts). */
 void contact_batch_store (struct carom_world *world);
 
-/* The kernels, one set per path (contact_batch_kernel.h). */
-void contact_batch_warm_start_portable (contact_batch *c, int32_t n, struct solver_body *sb);
-void contact_batch_solve_portable (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h);
-void contact_batch_push_out_portable (contact_batch *c, int32_t n, struct solver_body *sb, double push_rate,
-                                      int first);
-void contact_batch_warm_start_avx2 (contact_batch *c, int32_t n, struct solver_body *sb);
-void contact_batch_solve_avx2 (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h);
-void contact_batch_push_out_avx2 (contact_batch *c, int32_t n, struct solver_body *sb, double push_rate, int first);
-void contact_batch_solve_push_out_portable (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h,
-                                            double push_rate);
-void contact_batch_solve_push_out_avx2 (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h,
-                                        double push_rate);
-void contact_batch_warm_start_avx512 (contact_batch *c, int32_t n, struct solver_body *sb);
-void contact_batch_solve_avx512 (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h);
-void contact_batch_push_out_avx512 (contact_batch *c, int32_t n, struct solver_body *sb, double push_rate, int first);
-void contact_batch_solve_push_out_avx512 (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h,
-                                          double push_rate);
+/* One path's kernels (contact_batch_kernel.h, and shock propagation's,
+ * shock_kernel.h): the portable ones (contact_batch.c) and, where the
+ * compiler builds them (BATCH_X86_KERNELS), the AVX2 and AVX-512 ones
+ * (contact_batch_avx2.c, contact_batch_avx512.c). */
+struct shock_batch;
+typedef struct batch_kernels {
+  void (*warm_start) (contact_batch *c, int32_t n, struct solver_body *sb);
+  void (*solve) (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h);
+  void (*push_out) (contact_batch *c, int32_t n, struct solver_body *sb, double push_rate, int first);
+  void (*solve_push_out) (contact_batch *c, int32_t n, struct solver_body *sb, double inv_h, double push_rate);
+  /* over n shock batches whose lanes have `points` points (1 or 2); tol
+   * and inv_h as shock.c's pass */
+  void (*shock) (struct shock_batch *c, int32_t n, int points, struct solver_body *sb, double tol, double inv_h,
+                 int32_t moves);
+} batch_kernels;
+
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
+#define BATCH_X86_KERNELS 1
+#endif
+
+extern const batch_kernels batch_kernels_portable;
+#ifdef BATCH_X86_KERNELS
+extern const batch_kernels batch_kernels_avx2, batch_kernels_avx512;
+#endif
+
+/* The kernels of `path` (one the CPU has, solver_path_available). */
+const batch_kernels *batch_kernels_of (solver_path path);
 
 #endif

@@ -292,7 +292,7 @@ KERNEL_FN void KERNEL (warm_start_batch) (contact_batch *c, solver_body *sb, int
   KERNEL (scatter) (sb, c->b, &b, 0);
 }
 
-KERNEL_ATTR void KERNEL (contact_batch_warm_start) (contact_batch *c, int32_t n, solver_body *sb)
+static KERNEL_ATTR void KERNEL (contact_batch_warm_start) (contact_batch *c, int32_t n, solver_body *sb)
 {
   int32_t i;
   for (i = 0; i < n; ++i, c = batch_next (c))
@@ -397,7 +397,7 @@ KERNEL_FN void KERNEL (solve_batch) (contact_batch *c, solver_body *sb, wide ih,
   KERNEL (scatter) (sb, c->b, &b, 0);
 }
 
-KERNEL_ATTR void KERNEL (contact_batch_solve) (contact_batch *c, int32_t n, solver_body *sb, double inv_h)
+static KERNEL_ATTR void KERNEL (contact_batch_solve) (contact_batch *c, int32_t n, solver_body *sb, double inv_h)
 {
   wide ih = W_SET1 (inv_h);
   int32_t i;
@@ -420,7 +420,7 @@ KERNEL_FN void KERNEL (push_out_batch) (contact_batch *c, solver_body *sb, wide 
   KERNEL (scatter) (sb, c->b, &b, 1);
 }
 
-KERNEL_ATTR void KERNEL (contact_batch_push_out) (contact_batch *c, int32_t n, solver_body *sb, double push_rate,
+static KERNEL_ATTR void KERNEL (contact_batch_push_out) (contact_batch *c, int32_t n, solver_body *sb, double push_rate,
                                                   int first)
 {
   wide rate = W_SET1 (push_rate);
@@ -459,7 +459,7 @@ KERNEL_FN void KERNEL (solve_push_out_batch) (contact_batch *c, solver_body *sb,
   KERNEL (scatter) (sb, c->b, &pb, 1);
 }
 
-KERNEL_ATTR void KERNEL (contact_batch_solve_push_out) (contact_batch *c, int32_t n, solver_body *sb, double inv_h,
+static KERNEL_ATTR void KERNEL (contact_batch_solve_push_out) (contact_batch *c, int32_t n, solver_body *sb, double inv_h,
                                                         double push_rate)
 {
   wide ih = W_SET1 (inv_h), rate = W_SET1 (push_rate);

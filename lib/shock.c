@@ -480,9 +480,7 @@ static void wave_pass (carom_world *world, double tol, double inv_h, int32_t mov
   const int32_t *at = wave_cursors (world);
   shock_batch *batches = world->shock_batches;
   void (*solve) (shock_batch *, int32_t, int, solver_body *, double, double, int32_t)
-    = world->solver_path == SOLVER_PATH_AVX512 ? shock_batch_solve_avx512
-      : world->solver_path == SOLVER_PATH_AVX2 ? shock_batch_solve_avx2
-                                               : shock_batch_solve_portable;
+    = batch_kernels_of ((solver_path) world->solver_path)->shock;
   int32_t w, begin = 0, m = 0;
   for (w = 0; w < world->shock_waves; ++w)
     {

@@ -79,13 +79,4 @@ typedef struct shock_batch {
   shock_lane_point p[2];
 } shock_batch;
 
-/* The kernels, one per path, over n batches whose lanes have `points`
- * points (1 or 2); tol and inv_h as shock.c's pass. */
-void shock_batch_solve_portable (shock_batch *c, int32_t n, int points, struct solver_body *sb, double tol,
-                                 double inv_h, int32_t moves);
-void shock_batch_solve_avx2 (shock_batch *c, int32_t n, int points, struct solver_body *sb, double tol,
-                             double inv_h, int32_t moves);
-void shock_batch_solve_avx512 (shock_batch *c, int32_t n, int points, struct solver_body *sb, double tol,
-                               double inv_h, int32_t moves);
-
 #endif

@@ -128,7 +128,7 @@ KERNEL_FN void KERNEL (shock_batch) (shock_batch *c, int np, solver_body *sb, wi
   KERNEL (scatter) (sb, c->up, &up, 0);
 }
 
-KERNEL_ATTR void KERNEL (shock_batch_solve) (shock_batch *c, int32_t n, int points, solver_body *sb, double tol,
+static KERNEL_ATTR void KERNEL (shock_batch_solve) (shock_batch *c, int32_t n, int points, solver_body *sb, double tol,
                                              double inv_h, int32_t moves)
 {
   wide neg_tol = W_SET1 (-tol), ih = W_SET1 (inv_h);
