@@ -626,25 +626,25 @@ EOF
 - **The contact passes** (warm start, solve, relax, push-out, restitution
   and shock propagation: the stage tables above) take about as many
   instructions per step as Box2D v3's. The contact graph is coloured and
-  each colour solved four contacts at a time, in double precision, with
-  AVX2 where the CPU has it (lib/contact_batch.c; the portable path gives
-  the same bits), and with AVX-512's registers on a CPU that has them, as
-  this one does (lib/contact_batch_avx512.c: the same four lanes, but 32
-  registers instead of 16 and masks in mask registers; the AVX2 kernels
-  keep a quarter of their values on the stack for want of registers, 172
-  of the 662 instructions of the solve pass reading or writing it, the
-  AVX-512 build of the same source 43 of 572; the same bits;
-  `tools/compare-bench` against the AVX2 kernels: the pyramid 0.987, 12
-  pairs of `warmup=60 steps=3000`, the settled rain 0.981, 10 pairs of
-  `warmup=450 steps=600`, the rain over the bench window 0.911, 20 pairs).
-  Eight lanes of double to an AVX-512 register were measured too, as a
-  build whose batches have eight lanes on every path (the same bits):
-  against four lanes on AVX2, 0.950 on the pyramid and 0.954 on the rain
-  (16 pairs each); but the AVX2 kernels, holding each eight-lane value in
-  two registers, then spill more (607 of 1464 instructions of the solve
-  pass on the stack) and took 4.5% and 5.6% more time: a gain on the CPUs
-  with AVX-512 for a loss on those without, not taken. Batches as wide as
-  each world's path would have both. The passes do what Box2D v3's do
+  each colour packed into batches of eight contacts, solved in double
+  precision: a batch at once with AVX-512's registers where the CPU has
+  them, as this one does (lib/contact_batch_avx512.c: eight doubles a
+  register, 32 registers, masks in mask registers), four contacts at a
+  time with AVX2 (lib/contact_batch_avx2.c) or the portable kernels
+  (lib/contact_batch.c), each walking a batch in two groups of four; the
+  same bits on every path. Against batches of four, solved four at a
+  time on every path (`tools/compare-bench`, `warmup=60 steps=540`):
+  the AVX-512 kernels take 0.954 of the time on the pyramid (16 pairs;
+  fastest runs 0.1113 and 0.1062 ms) and 0.999 on the rain (16 pairs;
+  the settled rain, `warmup=450 steps=600`, 0.996 over 10: there the
+  passes wait on memory, not on arithmetic); the AVX2 kernels 1.003 on
+  the pyramid (12 pairs of `warmup=60 steps=3000`, a build choosing its
+  path by hand), the same instructions to 0.1% (callgrind, 229.3M and
+  229.1M over 120 steps); the portable kernels, their lane operations now
+  always inlined, 0.792 (8 pairs of `steps=1000`). Eight lanes in two
+  AVX2 registers each were measured before and not taken: they spilled
+  more (607 of 1464 instructions of the solve pass on the stack) and took
+  4.5% and 5.6% more time. The passes do what Box2D v3's do
   not: the exact 2x2 solve of two-point faces, a push-out on separate pseudo-velocities (split
   impulses, so position correction adds no energy; its first pass of a
   sub-step rides in the same walk over the batches as the last solve pass,

@@ -1,4 +1,4 @@
-/* Contacts solved four at a time (contact_batch.h): colouring, packing, the
+/* Contacts solved eight at a time (contact_batch.h): colouring, packing, the
  * portable kernels and the choice of path. */
 #include "contact_batch.h"
 #include "contact_batch_pack.h"
@@ -140,9 +140,9 @@ void contact_batch_plan (carom_world *world, const step_context *ctx)
                       keys, end);
     }
   /* Where each contact goes: a colour's batches hold its two-point
-   * contacts, then its one-point ones, each kind in list order, four to a
-   * batch, the colour's first at a batch of its own. Place p is lane p % 4
-   * of batch p / 4; `end` becomes each kind's next place, and `order` tells
+   * contacts, then its one-point ones, each kind in list order, eight to a
+   * batch (a batch's unused lanes are its last), the colour's first at a
+   * batch of its own. Place p is lane p % 8 of batch p / 8; `end` becomes each kind's next place, and `order` tells
    * each batch where it lies. The contacts are packed in list order
    * (contact_batch_pack), each as its set-up leaves it: packed in the
    * colours' order, the reads jumped through the list and waited on memory
@@ -320,38 +320,41 @@ void contact_batch_solve_push_out (carom_world *world, const step_context *ctx)
 
 /* ------------------------------------------------- the portable kernels */
 
+/* four lanes at a time, as the AVX2 kernels */
+#define KERNEL_WIDTH 4
+
 typedef struct wide {
-  double l[BATCH_LANES];
+  double l[KERNEL_WIDTH];
 } wide;
 typedef struct wmask {
-  int l[BATCH_LANES];
+  int l[KERNEL_WIDTH];
 } wmask;
 
 #define LANEWISE(expr)                                                                                             \
   int i;                                                                                                           \
-  for (i = 0; i < BATCH_LANES; ++i)                                                                                \
+  for (i = 0; i < KERNEL_WIDTH; ++i)                                                                               \
     r.l[i] = (expr);                                                                                               \
   return r
 
-static inline wide w_load (const double *p) { wide r; LANEWISE (p[i]); }
-static inline void w_store (double *p, wide x) { int i; for (i = 0; i < BATCH_LANES; ++i) p[i] = x.l[i]; }
-static inline wide w_set1 (double d) { wide r; LANEWISE (d); }
-static inline wide w_add (wide a, wide b) { wide r; LANEWISE (a.l[i] + b.l[i]); }
-static inline wide w_sub (wide a, wide b) { wide r; LANEWISE (a.l[i] - b.l[i]); }
-static inline wide w_mul (wide a, wide b) { wide r; LANEWISE (a.l[i] * b.l[i]); }
-static inline wide w_div (wide a, wide b) { wide r; LANEWISE (a.l[i] / b.l[i]); }
-static inline wide w_neg (wide a) { wide r; LANEWISE (-a.l[i]); }
-static inline wide w_max (wide a, wide b) { wide r; LANEWISE (a.l[i] > b.l[i] ? a.l[i] : b.l[i]); }
-static inline wide w_min (wide a, wide b) { wide r; LANEWISE (a.l[i] < b.l[i] ? a.l[i] : b.l[i]); }
-static inline wmask m_gt (wide a, wide b) { wmask r; LANEWISE (a.l[i] > b.l[i]); }
-static inline wmask m_ge (wide a, wide b) { wmask r; LANEWISE (a.l[i] >= b.l[i]); }
-static inline wmask m_lt (wide a, wide b) { wmask r; LANEWISE (a.l[i] < b.l[i]); }
-static inline wmask m_ne (wide a, wide b) { wmask r; LANEWISE (a.l[i] != b.l[i]); }
-static inline wmask m_and (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] & b.l[i]); }
-static inline wmask m_or (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] | b.l[i]); }
-static inline wmask m_andnot (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] & !b.l[i]); }
-static inline wide w_sel (wmask m, wide a, wide b) { wide r; LANEWISE (m.l[i] ? a.l[i] : b.l[i]); }
-static inline int m_any (wmask m) { return m.l[0] | m.l[1] | m.l[2] | m.l[3]; }
+ALWAYS_INLINE wide w_load (const double *p) { wide r; LANEWISE (p[i]); }
+ALWAYS_INLINE void w_store (double *p, wide x) { int i; for (i = 0; i < KERNEL_WIDTH; ++i) p[i] = x.l[i]; }
+ALWAYS_INLINE wide w_set1 (double d) { wide r; LANEWISE (d); }
+ALWAYS_INLINE wide w_add (wide a, wide b) { wide r; LANEWISE (a.l[i] + b.l[i]); }
+ALWAYS_INLINE wide w_sub (wide a, wide b) { wide r; LANEWISE (a.l[i] - b.l[i]); }
+ALWAYS_INLINE wide w_mul (wide a, wide b) { wide r; LANEWISE (a.l[i] * b.l[i]); }
+ALWAYS_INLINE wide w_div (wide a, wide b) { wide r; LANEWISE (a.l[i] / b.l[i]); }
+ALWAYS_INLINE wide w_neg (wide a) { wide r; LANEWISE (-a.l[i]); }
+ALWAYS_INLINE wide w_max (wide a, wide b) { wide r; LANEWISE (a.l[i] > b.l[i] ? a.l[i] : b.l[i]); }
+ALWAYS_INLINE wide w_min (wide a, wide b) { wide r; LANEWISE (a.l[i] < b.l[i] ? a.l[i] : b.l[i]); }
+ALWAYS_INLINE wmask m_gt (wide a, wide b) { wmask r; LANEWISE (a.l[i] > b.l[i]); }
+ALWAYS_INLINE wmask m_ge (wide a, wide b) { wmask r; LANEWISE (a.l[i] >= b.l[i]); }
+ALWAYS_INLINE wmask m_lt (wide a, wide b) { wmask r; LANEWISE (a.l[i] < b.l[i]); }
+ALWAYS_INLINE wmask m_ne (wide a, wide b) { wmask r; LANEWISE (a.l[i] != b.l[i]); }
+ALWAYS_INLINE wmask m_and (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] & b.l[i]); }
+ALWAYS_INLINE wmask m_or (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] | b.l[i]); }
+ALWAYS_INLINE wmask m_andnot (wmask a, wmask b) { wmask r; LANEWISE (a.l[i] & !b.l[i]); }
+ALWAYS_INLINE wide w_sel (wmask m, wide a, wide b) { wide r; LANEWISE (m.l[i] ? a.l[i] : b.l[i]); }
+ALWAYS_INLINE int m_any (wmask m) { return m.l[0] | m.l[1] | m.l[2] | m.l[3]; }
 
 #define W_LOAD w_load
 #define W_STORE w_store

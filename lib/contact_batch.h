@@ -1,17 +1,19 @@
-/* Contacts solved four at a time.
+/* Contacts solved eight at a time.
  *
  * The contacts that need nothing but the sub-steps' passes (no restitution,
  * at most two points, bodies large enough for one pass) are coloured: no
  * two contacts of a colour share a body that moves, so the contacts of one
  * colour can be solved in any order, or at once. Each colour is packed into
- * batches of four lanes (structure of arrays) that one kernel solves lane by
- * lane: the portable kernel in contact_batch.c, and the same kernel on AVX2
- * registers in contact_batch_avx2.c and with AVX-512's (32 registers of
- * four doubles, masks in mask registers) in contact_batch_avx512.c, chosen
- * at run time from the CPU. All are one source (contact_batch_kernel.h)
- * over the same operations in the same order, with no fused or approximate
- * arithmetic, so they give the same bits. Bodies that do not move (static, asleep) take no colour: lanes only
- * read them, and unused lanes point at an inert body that takes nothing.
+ * batches of eight lanes (structure of arrays) that one kernel solves lane
+ * by lane: the portable kernel in contact_batch.c and the same kernel on
+ * AVX2 registers in contact_batch_avx2.c, each four lanes at a time (a
+ * batch in two groups of four), and with AVX-512's registers, a batch at
+ * once, in contact_batch_avx512.c; chosen at run time from the CPU. All are
+ * one source (contact_batch_kernel.h) over the same operations in the same
+ * order, with no fused or approximate arithmetic, so they give the same
+ * bits. Bodies that do not move (static, asleep, kinematic) take no colour:
+ * lanes only read them, and unused lanes point at an inert body that takes
+ * nothing.
  * Contacts with such a body are coloured apart and solved after the others
  * (the ground last, so nothing undoes it within a pass). Within a colour,
  * two-point contacts are packed before one-point ones: the order within a
@@ -35,7 +37,8 @@
 struct carom_world;
 struct solver_body;
 
-#define BATCH_LANES 4
+/* the lanes of a batch: one AVX-512 register of doubles, two of AVX2 */
+#define BATCH_LANES 8
 /* Colours of the constraint graph (as many again for the constraints with
  * a body that does not move); a constraint whose bodies have used them all
  * is left over (solved one at a time, after the batches). */
@@ -129,7 +132,7 @@ void contact_batch_store (struct carom_world *world);
 /* One path's kernels (contact_batch_kernel.h, and shock propagation's,
  * shock_kernel.h): the portable ones (contact_batch.c) and, where the
  * compiler builds them (BATCH_X86_KERNELS), the AVX2 and AVX-512 ones
- * (contact_batch_avx2.c, contact_batch_avx512.c). */
+ * (contact_batch_avx2.c, contact_batch_avx512.c with shock_avx512.c). */
 struct shock_batch;
 typedef struct batch_kernels {
   void (*warm_start) (contact_batch *c, int32_t n, struct solver_body *sb);
@@ -149,6 +152,9 @@ typedef struct batch_kernels {
 extern const batch_kernels batch_kernels_portable;
 #ifdef BATCH_X86_KERNELS
 extern const batch_kernels batch_kernels_avx2, batch_kernels_avx512;
+/* (shock_avx512.c's, in batch_kernels_avx512) */
+void shock_batch_solve_avx512 (struct shock_batch *c, int32_t n, int points, struct solver_body *sb, double tol,
+                               double inv_h, int32_t moves);
 #endif
 
 /* The kernels of `path` (one the CPU has, solver_path_available). */

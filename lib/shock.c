@@ -435,10 +435,10 @@ static int32_t make_waves (carom_world *world, const int32_t *list)
   for (w = 0; w < waves; ++w)
     {
       int32_t *cur = &at[WAVE_KINDS * w], two = cur[WAVE_TWO], one = cur[WAVE_ONE], extra = cur[WAVE_MORE];
-      cur[WAVE_TWO] = BATCH_LANES * batch_count;
-      batch_count += (two + BATCH_LANES - 1) / BATCH_LANES;
-      cur[WAVE_ONE] = BATCH_LANES * batch_count;
-      batch_count += (one + BATCH_LANES - 1) / BATCH_LANES;
+      cur[WAVE_TWO] = SHOCK_LANES * batch_count;
+      batch_count += (two + SHOCK_LANES - 1) / SHOCK_LANES;
+      cur[WAVE_ONE] = SHOCK_LANES * batch_count;
+      batch_count += (one + SHOCK_LANES - 1) / SHOCK_LANES;
       cur[WAVE_MORE] = more_count;
       more_count += extra;
     }
@@ -455,7 +455,7 @@ static int32_t make_waves (carom_world *world, const int32_t *list)
       if (kind == WAVE_MORE)
         points = make_row (&world->shock_rows[place], k, level, sb, points);
       else
-        pack_contact (&batches[place / BATCH_LANES], place % BATCH_LANES, k, level, sb);
+        pack_contact (&batches[place / SHOCK_LANES], place % SHOCK_LANES, k, level, sb);
     }
   /* each cursor now ends its run: fill the last batch's unused lanes */
   for (w = 0; w < waves; ++w)
@@ -464,8 +464,8 @@ static int32_t make_waves (carom_world *world, const int32_t *list)
       for (kind = WAVE_TWO; kind <= WAVE_ONE; ++kind)
         {
           int32_t end = at[WAVE_KINDS * w + kind], lane;
-          for (lane = end % BATCH_LANES; lane > 0 && lane < BATCH_LANES; ++lane)
-            pack_empty (&batches[end / BATCH_LANES], lane, inert, kind == WAVE_TWO ? 2 : 1);
+          for (lane = end % SHOCK_LANES; lane > 0 && lane < SHOCK_LANES; ++lane)
+            pack_empty (&batches[end / SHOCK_LANES], lane, inert, kind == WAVE_TWO ? 2 : 1);
         }
     }
   for (i = 0; i < batch_count; ++i)
@@ -485,8 +485,8 @@ static void wave_pass (carom_world *world, double tol, double inv_h, int32_t mov
   for (w = 0; w < world->shock_waves; ++w)
     {
       const int32_t *c = &at[WAVE_KINDS * w];
-      int32_t two_end = (c[WAVE_TWO] + BATCH_LANES - 1) / BATCH_LANES;
-      int32_t one_end = (c[WAVE_ONE] + BATCH_LANES - 1) / BATCH_LANES;
+      int32_t two_end = (c[WAVE_TWO] + SHOCK_LANES - 1) / SHOCK_LANES;
+      int32_t one_end = (c[WAVE_ONE] + SHOCK_LANES - 1) / SHOCK_LANES;
       if (two_end > begin)
         solve (&batches[begin], two_end - begin, 2, world->solver_bodies, tol, inv_h, moves);
       if (one_end > two_end)

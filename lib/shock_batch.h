@@ -57,25 +57,29 @@ typedef struct shock_row {
   shock_point *p;       /* its `count` points */
 } shock_row;
 
+/* The lanes of a shock batch: four on every path (a wave rarely has more
+ * rows to fill eight). */
+#define SHOCK_LANES 4
+
 /* One point of a batch's four lanes: shock.c's shock_point. */
 typedef struct shock_lane_point {
-  double nx[BATCH_LANES], ny[BATCH_LANES];
-  double ra_x[BATCH_LANES], ra_y[BATCH_LANES], rb_x[BATCH_LANES], rb_y[BATCH_LANES];
-  double adjusted[BATCH_LANES], rn_a[BATCH_LANES], rn_b[BATCH_LANES];
-  double mass[BATCH_LANES], ang[BATCH_LANES];
-  double gap[BATCH_LANES]; /* kept at the positions gap_at */
+  double nx[SHOCK_LANES], ny[SHOCK_LANES];
+  double ra_x[SHOCK_LANES], ra_y[SHOCK_LANES], rb_x[SHOCK_LANES], rb_y[SHOCK_LANES];
+  double adjusted[SHOCK_LANES], rn_a[SHOCK_LANES], rn_b[SHOCK_LANES];
+  double mass[SHOCK_LANES], ang[SHOCK_LANES];
+  double gap[SHOCK_LANES]; /* kept at the positions gap_at */
 } shock_lane_point;
 
 /* Four rows (unused lanes on the inert body, every number 0). A batch of
  * one-point rows never reads its second point's bytes. */
 typedef struct shock_batch {
-  int32_t a[BATCH_LANES], b[BATCH_LANES], up[BATCH_LANES]; /* solver bodies; up is a or b */
+  int32_t a[SHOCK_LANES], b[SHOCK_LANES], up[SHOCK_LANES]; /* solver bodies; up is a or b */
   int32_t gap_at;                                          /* as shock_row.gap_at */
   int32_t unused;
-  double up_is_a[BATCH_LANES]; /* 1 where the upper body is a */
-  double im_up[BATCH_LANES];
-  double face[BATCH_LANES];    /* 1 where the row is a block (two points) */
-  double k11[BATCH_LANES], k12[BATCH_LANES], k22[BATCH_LANES];
+  double up_is_a[SHOCK_LANES]; /* 1 where the upper body is a */
+  double im_up[SHOCK_LANES];
+  double face[SHOCK_LANES];    /* 1 where the row is a block (two points) */
+  double k11[SHOCK_LANES], k12[SHOCK_LANES], k22[SHOCK_LANES];
   shock_lane_point p[2];
 } shock_batch;
 

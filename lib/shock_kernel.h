@@ -1,10 +1,13 @@
 /* The shock rows' kernel of shock_batch.h, written once over four lanes in
- * the operations of contact_batch_kernel.h, which the including file
- * includes first. Each lane does what shock.c's shock_row_solve does for
+ * the operations of batch_lanes.h, which the including file includes first
+ * (itself or by contact_batch_kernel.h), with KERNEL_WIDTH 4. Each lane does what shock.c's shock_row_solve does for
  * its row, in the same order of operations; its branches become masks:
  * a lane that shock_row_solve would leave takes an impulse of 0, and its
  * upper body is written back unchanged (by a select: adding a zero would
  * turn -0 into +0). */
+
+/* a shock batch is one register of lanes */
+typedef char KERNEL (shock_width)[KERNEL_WIDTH == SHOCK_LANES ? 1 : -1];
 
 #ifdef CAROM_DEBUG_CHECKS
 #include <stdio.h>
@@ -80,10 +83,10 @@ KERNEL_FN void KERNEL (shock_batch) (shock_batch *c, int np, solver_body *sb, wi
   else
     for (j = 0; j < np; ++j)
       {
-        double now[BATCH_LANES];
+        double now[SHOCK_LANES];
         int i;
         W_STORE (now, KERNEL (shock_gap) (&a, &b, &c->p[j], ih));
-        for (i = 0; i < BATCH_LANES; ++i)
+        for (i = 0; i < SHOCK_LANES; ++i)
           if (now[i] != c->p[j].gap[i])
             {
               fprintf (stderr, "carom: CAROM_DEBUG_CHECKS: shock propagation kept a gap the bodies moved from\n");
@@ -128,8 +131,15 @@ KERNEL_FN void KERNEL (shock_batch) (shock_batch *c, int np, solver_body *sb, wi
   KERNEL (scatter) (sb, c->up, &up, 0);
 }
 
-static KERNEL_ATTR void KERNEL (shock_batch_solve) (shock_batch *c, int32_t n, int points, solver_body *sb, double tol,
-                                             double inv_h, int32_t moves)
+/* static, unless the including file exports it (SHOCK_KERNEL_LINKAGE
+ * empty) for another file's table of kernels */
+#ifndef SHOCK_KERNEL_LINKAGE
+#define SHOCK_KERNEL_LINKAGE static
+#endif
+
+SHOCK_KERNEL_LINKAGE KERNEL_ATTR void KERNEL (shock_batch_solve) (shock_batch *c, int32_t n, int points,
+                                                               solver_body *sb, double tol, double inv_h,
+                                                               int32_t moves)
 {
   wide neg_tol = W_SET1 (-tol), ih = W_SET1 (inv_h);
   int32_t i;

@@ -53,6 +53,14 @@ static void gather (carom_world *world)
       solver_body s;
       s.v = b->v;
       s.w = b->w;
+      /* A body that does not move under the constraints keeps its
+       * velocities to the bit through the passes: an impulse on it is
+       * +0 or -0 times its inverse masses of 0, and adding either zero
+       * leaves every number but -0 as it was. So that no lane of a batch
+       * can change what another reads (contact_batch_kernel.h), a -0 is
+       * made +0 here. */
+      if (moves != MOVES_DYNAMIC)
+        s.v.x += 0.0, s.v.y += 0.0, s.w += 0.0;
       s.dp = v2 (0.0, 0.0);
       s.pv = v2 (0.0, 0.0);
       s.pw = 0.0;

@@ -2,7 +2,9 @@
  * same bits from every solver path this CPU has. */
 #include "support.h"
 
+#include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "contact_batch.h"
 #include "contact_solver.h"
@@ -206,6 +208,312 @@ static void test_every_path_gives_the_same_bits (void **state)
   }
 }
 
+/* The kernels themselves, on batches made up lane by lane: every pass on
+ * every path the CPU has gives the same bits, the signs of zeros too. The
+ * kernels of four lanes take a batch of eight in two groups; AVX-512's
+ * takes it at once, skipping a part of a pass only for a group that has no
+ * lane in it (batch_lanes.h): velocities of -0 on bodies that move, lanes
+ * that take a push beside lanes that do not, 2x2 blocks beside points
+ * solved alone, speculative gaps and overlaps, batches with an empty
+ * second group and with a part-filled one. Bodies that do not move have no
+ * velocity of -0 (solver.c's gather), and are shared by lanes. */
+#define KB_BATCHES 96
+/* three that do not move, and two for each lane of each batch: no batch
+ * moves another's bodies, which would make a zero of one a number again */
+#define KB_BODIES (3 + 2 * BATCH_LANES * KB_BATCHES)
+
+static uint32_t kb_seed;
+
+static double kb_uniform (double lo, double hi)
+{
+  kb_seed = kb_seed * 1664525u + 1013904223u;
+  return lo + (hi - lo) * (double) (kb_seed >> 8) / 16777216.0;
+}
+
+/* a velocity: a third exactly -0 or +0 */
+static double kb_velocity (void)
+{
+  double u = kb_uniform (0.0, 1.0);
+  return u < 0.17 ? -0.0 : u < 0.33 ? 0.0 : kb_uniform (-2.0, 2.0);
+}
+
+/* mode 0: apart, no push so far; 1: anything; 2: overlapping */
+static void kb_point (batch_point *q, int lane, int apart, int mode)
+{
+  double a = kb_uniform (0.0, 6.283185307179586);
+  /* some normals along an axis exactly, whose other part is +0 or -0 */
+  double nx = apart ? 0.0 : cos (a), ny = apart ? 1.0 : sin (a);
+  if (kb_uniform (0.0, 1.0) < 0.2)
+    nx = -0.0;
+  q->nx[lane] = nx, q->ny[lane] = ny;
+  q->ra_x[lane] = kb_uniform (-0.5, 0.5), q->ra_y[lane] = kb_uniform (-0.5, 0.5);
+  q->rb_x[lane] = kb_uniform (-0.5, 0.5), q->rb_y[lane] = kb_uniform (-0.5, 0.5);
+  q->adjusted[lane] = mode == 0 ? kb_uniform (0.01, 0.02) : mode == 2 ? kb_uniform (-0.03, -0.01) : kb_uniform (-0.03, 0.02);
+  q->rn_a[lane] = q->ra_x[lane] * ny - q->ra_y[lane] * nx;
+  q->rn_b[lane] = q->rb_x[lane] * ny - q->rb_y[lane] * nx;
+  q->rt_a[lane] = q->ra_x[lane] * nx + q->ra_y[lane] * ny;
+  q->rt_b[lane] = q->rb_x[lane] * nx + q->rb_y[lane] * ny;
+  q->normal_mass[lane] = kb_uniform (0.2, 2.0);
+  q->tangent_mass[lane] = kb_uniform (0.2, 2.0);
+  q->normal_impulse[lane] = kb_uniform (0.0, 1.0) < 0.3 ? 0.0 : kb_uniform (0.0, 0.5);
+  q->tangent_impulse[lane] = kb_uniform (0.0, 1.0) < 0.3 ? 0.0 : kb_uniform (-0.2, 0.2);
+  q->push_impulse[lane] = mode == 0 || kb_uniform (0.0, 1.0) < 0.5 ? 0.0 : kb_uniform (0.0, 0.1);
+  q->total[lane] = 0.0;
+}
+
+static void kb_empty_point (batch_point *q, int lane)
+{
+  q->nx[lane] = q->ny[lane] = q->ra_x[lane] = q->ra_y[lane] = q->rb_x[lane] = q->rb_y[lane] = 0.0;
+  q->adjusted[lane] = q->rn_a[lane] = q->rn_b[lane] = q->rt_a[lane] = q->rt_b[lane] = 0.0;
+  q->normal_mass[lane] = q->tangent_mass[lane] = 0.0;
+  q->normal_impulse[lane] = q->tangent_impulse[lane] = q->push_impulse[lane] = q->total[lane] = 0.0;
+}
+
+/* New velocities and pseudo-velocities for the bodies that move, a third
+ * of them zeros of either sign. */
+static void kb_refresh (solver_body *sb)
+{
+  int i;
+  for (i = 3; i < KB_BODIES; ++i)
+    {
+      sb[i].v = v2 (kb_velocity (), kb_velocity ());
+      sb[i].w = kb_velocity ();
+      sb[i].pv = v2 (kb_velocity (), kb_velocity ());
+      sb[i].pw = kb_velocity ();
+    }
+}
+
+/* Batches, one after the other, into `room`; their count of lanes used
+ * into used[]. Bodies 0-2 do not move; KB_BODIES is the inert body. */
+static size_t kb_batches (unsigned char *room, solver_body *sb, int *used)
+{
+  size_t at = 0;
+  int i, lane, j;
+  for (i = 0; i < KB_BODIES + 1; ++i)
+    {
+      solver_body *b = &sb[i];
+      double t = kb_uniform (-0.05, 0.05);
+      memset (b, 0, sizeof *b);
+      if (i >= 3 && i < KB_BODIES)
+        {
+          b->v = v2 (kb_velocity (), kb_velocity ());
+          b->w = kb_velocity ();
+          b->pv = v2 (kb_velocity (), kb_velocity ());
+          b->pw = kb_velocity ();
+          b->im = kb_uniform (0.2, 2.0);
+          b->ii = kb_uniform (0.2, 4.0);
+          b->moves = MOVES_DYNAMIC;
+        }
+      else if (i < 3)
+        b->v = v2 (i == 1 ? 0.5 : 0.0, 0.0); /* the ground; a belt; a wall */
+      b->dp = i < 3 || i == KB_BODIES ? v2 (0.0, 0.0) : v2 (kb_uniform (-0.01, 0.01), kb_uniform (-0.01, 0.01));
+      b->dq.c = i < 3 || i == KB_BODIES ? 1.0 : cos (t);
+      b->dq.s = i < 3 || i == KB_BODIES ? 0.0 : sin (t);
+    }
+  for (i = 0; i < KB_BATCHES; ++i)
+    {
+      contact_batch *c = (contact_batch *) (room + at);
+      int points = i % 3 == 0 ? 1 : 2;
+      /* full, a part-filled second group, an empty one */
+      int lanes = i % 4 == 0 ? 3 : i % 4 == 1 ? 6 : BATCH_LANES;
+      int apart = i % 5 == 4; /* against the bodies that do not move */
+      int first = 3 + i * 2 * BATCH_LANES, mode;
+      c->points = points;
+      used[i] = lanes;
+      for (lane = 0; lane < BATCH_LANES; ++lane)
+        {
+          if (lane >= lanes)
+            {
+              c->a[lane] = c->b[lane] = KB_BODIES;
+              c->contact[lane] = -1;
+              c->im_a[lane] = c->ii_a[lane] = c->im_b[lane] = c->ii_b[lane] = 0.0;
+              c->friction[lane] = c->slop[lane] = c->max_push[lane] = 0.0;
+              for (j = 0; j < points; ++j)
+                kb_empty_point (BATCH_POINT (c, j), lane);
+              if (points == 2)
+                {
+                  c->two.k11[lane] = c->two.k12[lane] = c->two.k22[lane] = c->two.pair[lane] = 0.0;
+                  c->two.i11[lane] = c->two.i12[lane] = c->two.i22[lane] = c->two.block[lane] = 0.0;
+                }
+              continue;
+            }
+          /* each group of four alike, so that one takes a part of a pass
+           * the other does not */
+          mode = (i + lane / 4) % 3;
+          c->contact[lane] = lane;
+          c->a[lane] = apart ? lane % 3 : first + 2 * lane;
+          c->b[lane] = first + 2 * lane + 1;
+          c->im_a[lane] = sb[c->a[lane]].im, c->ii_a[lane] = sb[c->a[lane]].ii;
+          c->im_b[lane] = sb[c->b[lane]].im, c->ii_b[lane] = sb[c->b[lane]].ii;
+          c->friction[lane] = lane % 3 == 0 ? 0.0 : kb_uniform (0.1, 1.0);
+          c->slop[lane] = 0.005;
+          c->max_push[lane] = kb_uniform (0.1, 1.0);
+          for (j = 0; j < points; ++j)
+            kb_point (BATCH_POINT (c, j), lane, apart, mode);
+          if (points == 2)
+            {
+              double k11 = kb_uniform (0.5, 2.0), k22 = kb_uniform (0.5, 2.0), k12 = kb_uniform (-0.4, 0.4);
+              double det = k11 * k22 - k12 * k12;
+              int pair = mode == 2 || (mode == 1 && kb_uniform (0.0, 1.0) < 0.7);
+              int block = pair && (mode == 2 || kb_uniform (0.0, 1.0) < 0.7);
+              c->two.k11[lane] = pair ? k11 : 0.0, c->two.k12[lane] = pair ? k12 : 0.0;
+              c->two.k22[lane] = pair ? k22 : 0.0, c->two.pair[lane] = pair;
+              c->two.i11[lane] = block ? k22 / det : 0.0, c->two.i12[lane] = block ? -k12 / det : 0.0;
+              c->two.i22[lane] = block ? k11 / det : 0.0, c->two.block[lane] = block;
+            }
+        }
+      at += CONTACT_BATCH_SIZE (points);
+    }
+  return at;
+}
+
+#define KB_ROUNDS 3
+#define KB_PASSES 5
+
+/* The bodies' bytes, summed (FNV-1a). */
+static uint64_t kb_sum (const solver_body *sb)
+{
+  const unsigned char *b = (const unsigned char *) sb;
+  uint64_t h = 14695981039346656037u;
+  size_t i;
+  for (i = 0; i < (KB_BODIES + 1) * sizeof (solver_body); ++i)
+    h = (h ^ b[i]) * 1099511628211u;
+  return h;
+}
+
+static void test_kernels_agree_lane_by_lane (void **state)
+{
+  static const int paths[SOLVER_PATHS] = { SOLVER_PATH_PORTABLE, SOLVER_PATH_AVX2, SOLVER_PATH_AVX512 };
+  solver_body *sb[SOLVER_PATHS];
+  unsigned char *room[SOLVER_PATHS];
+  int used[KB_BATCHES];
+  uint64_t sums[SOLVER_PATHS][KB_ROUNDS][KB_PASSES];
+  size_t bytes = 0;
+  int p, ran = 0, round, q, pass;
+  (void) state;
+  for (p = 0; p < SOLVER_PATHS; ++p)
+    {
+      const batch_kernels *k;
+      if (!solver_path_available ((solver_path) paths[p]))
+        continue;
+      k = batch_kernels_of ((solver_path) paths[p]);
+      sb[ran] = test_malloc ((KB_BODIES + 1) * sizeof (solver_body));
+      room[ran] = test_malloc (KB_BATCHES * sizeof (contact_batch));
+      kb_seed = 777u;
+      bytes = kb_batches (room[ran], sb[ran], used);
+      /* each pass from new velocities (the passes before would have made
+       * most zeros of the bodies numbers), the bodies' bytes after it
+       * summed */
+      for (round = 0; round < KB_ROUNDS; ++round)
+        {
+          contact_batch *c = (contact_batch *) room[ran];
+          uint64_t *sum = sums[ran][round];
+          kb_refresh (sb[ran]);
+          k->solve (c, KB_BATCHES, sb[ran], 240.0);
+          sum[0] = kb_sum (sb[ran]);
+          kb_refresh (sb[ran]);
+          k->push_out (c, KB_BATCHES, sb[ran], 0.2 * 240.0, 1);
+          sum[1] = kb_sum (sb[ran]);
+          kb_refresh (sb[ran]);
+          k->push_out (c, KB_BATCHES, sb[ran], 0.2 * 240.0, 0);
+          sum[2] = kb_sum (sb[ran]);
+          kb_refresh (sb[ran]);
+          k->solve_push_out (c, KB_BATCHES, sb[ran], 240.0, 0.2 * 240.0);
+          sum[3] = kb_sum (sb[ran]);
+          kb_refresh (sb[ran]);
+          k->warm_start (c, KB_BATCHES, sb[ran]);
+          sum[4] = kb_sum (sb[ran]);
+        }
+      ++ran;
+    }
+  assert_true (bytes > 0);
+  for (q = 1; q < ran; ++q)
+    {
+      const unsigned char *x = room[0], *y = room[q];
+      int i, lane, j;
+      for (round = 0; round < KB_ROUNDS; ++round)
+        for (pass = 0; pass < KB_PASSES; ++pass)
+          if (sums[q][round][pass] != sums[0][round][pass])
+            fail_msg ("path %d of those this CPU has moves the bodies otherwise than the portable one (pass %d of "
+                      "round %d)",
+                      q, pass, round);
+      /* the lanes' impulses (the unused lanes of a group the kernels of
+       * four leave are not compared) */
+      for (i = 0; i < KB_BATCHES; ++i)
+        {
+          const contact_batch *c = (const contact_batch *) x, *d = (const contact_batch *) y;
+          for (lane = 0; lane < used[i]; ++lane)
+            for (j = 0; j < c->points; ++j)
+              {
+                const batch_point *u = BATCH_POINT (c, j), *v = BATCH_POINT (d, j);
+                if (memcmp (&u->normal_impulse[lane], &v->normal_impulse[lane], sizeof (double)) != 0
+                    || memcmp (&u->tangent_impulse[lane], &v->tangent_impulse[lane], sizeof (double)) != 0
+                    || memcmp (&u->push_impulse[lane], &v->push_impulse[lane], sizeof (double)) != 0
+                    || memcmp (&u->total[lane], &v->total[lane], sizeof (double)) != 0)
+                  fail_msg ("path %d: batch %d lane %d point %d differs from the portable path", q, i, lane, j);
+              }
+          x += CONTACT_BATCH_SIZE (c->points);
+          y += CONTACT_BATCH_SIZE (d->points);
+        }
+    }
+  printf ("kernels of %d paths compared on %d batches\n", ran, KB_BATCHES);
+  for (q = 0; q < ran; ++q)
+    {
+      test_free (sb[q]);
+      test_free (room[q]);
+    }
+}
+
+/* What lets a batch's lanes share a body that does not move: the solver
+ * gives such a body no velocity of -0 (solver.c's gather), so the +0 and -0
+ * impulses it takes (its inverse masses are 0) leave it to the bit. A
+ * kinematic body given -0 in every part of its velocity has +0 in the
+ * solver, and one under a row of boxes steps on every path alike. */
+static void test_bodies_that_do_not_move_have_no_negative_zero (void **state)
+{
+  const int paths[SOLVER_PATHS] = { SOLVER_PATH_PORTABLE, SOLVER_PATH_AVX2, SOLVER_PATH_AVX512 };
+  uint64_t hash[SOLVER_PATHS];
+  int p, ran = 0, i, step;
+  (void) state;
+  for (p = 0; p < SOLVER_PATHS; ++p)
+    {
+      carom_world *w = NULL;
+      carom_world_def def;
+      carom_body_def d;
+      if (!solver_path_available ((solver_path) paths[p]))
+        continue;
+      carom_world_def_init (&def, sizeof def);
+      def.gravity_y = -10.0;
+      def.friction = 0.5;
+      assert_status (carom_world_init (&w, &def), CAROM_OK);
+      assert_true (world_set_solver_path (w, paths[p]));
+      carom_body_def_init (&d, sizeof d);
+      d.type = CAROM_KINEMATIC;
+      d.vx = -0.0, d.vy = -0.0, d.spin = -0.0;
+      /* one alone, far off, which no contact touches; one under the boxes */
+      d.x = 100.0;
+      assert_status (carom_world_add_box (w, &d, 1.0, 1.0, NULL), CAROM_OK);
+      d.x = 0.0;
+      assert_status (carom_world_add_box (w, &d, 30.0, 1.0, NULL), CAROM_OK);
+      for (i = 0; i < 12; ++i)
+        add_box (w, CAROM_DYNAMIC, -12.0 + 2.0 * i, 1.0, 0.0, 1.0, 1.0);
+      for (step = 0; step < 60; ++step)
+        {
+          assert_status (carom_world_update (w, 1.0 / 60), CAROM_OK);
+          for (i = 0; i < 2; ++i)
+            {
+              assert_false (signbit (w->solver_bodies[i].v.x));
+              assert_false (signbit (w->solver_bodies[i].v.y));
+              assert_false (signbit (w->solver_bodies[i].w));
+            }
+        }
+      hash[ran++] = world_state_hash (w);
+      carom_world_destroy (w);
+    }
+  for (i = 1; i < ran; ++i)
+    assert_true (hash[i] == hash[0]);
+}
+
 /* Columns for shock propagation's waves: stacks of boxes, some capped by
  * a body fifty times heavier (with a post beside the cap), some with a
  * disc, a compound or a comb on top (rows of one, two and more points),
@@ -340,6 +648,8 @@ int main (void)
     cmocka_unit_test (test_constraint_colour_takes_the_first_free),
     cmocka_unit_test (test_batches_are_properly_coloured),
     cmocka_unit_test (test_every_path_gives_the_same_bits),
+    cmocka_unit_test (test_kernels_agree_lane_by_lane),
+    cmocka_unit_test (test_bodies_that_do_not_move_have_no_negative_zero),
     cmocka_unit_test (test_shock_waves_keep_the_level_order),
   };
   return cmocka_run_group_tests (tests, NULL, NULL);
