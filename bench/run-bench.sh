@@ -535,7 +535,8 @@ by the compiler count in their caller (drift and substep in carom_world_update).
 broad phase's own share is broadphase_update's less the narrow phase it calls
 (on_pair). Instruction counts do not show cache misses; valgrind runs no
 AVX-512 code, so the batch kernels counted are the AVX2 ones (the same
-bits, a few more instructions). Raw profiles:
+bits; more instructions than the AVX-512 ones, which take eight lanes at
+once). Raw profiles:
 \`$B/callgrind.*.out\` and \`$B/profile-*.txt\` (not in git).
 
 EOF

@@ -3,8 +3,10 @@
 #include "contact_batch.h"
 #include "contact_batch_pack.h"
 
+#include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "contact_solver.h"
 #include "shock_batch.h"
@@ -293,26 +295,54 @@ const batch_kernels *batch_kernels_of (solver_path path)
   return &batch_kernels_portable;
 }
 
+#ifdef CAROM_DEBUG_CHECKS
+/* What lets lanes share a body that does not move (contact_batch.h): it
+ * has no velocity of -0. */
+static void check_still_bodies (const carom_world *world)
+{
+  int32_t i;
+  for (i = 0; i <= world->slot_count; ++i)
+    {
+      const solver_body *b = &world->solver_bodies[i];
+      int negative_zero = (b->v.x == 0.0 && signbit (b->v.x)) || (b->v.y == 0.0 && signbit (b->v.y))
+                          || (b->w == 0.0 && signbit (b->w)) || (b->pv.x == 0.0 && signbit (b->pv.x))
+                          || (b->pv.y == 0.0 && signbit (b->pv.y)) || (b->pw == 0.0 && signbit (b->pw));
+      if ((i == world->slot_count || b->moves != MOVES_DYNAMIC) && negative_zero)
+        {
+          fprintf (stderr, "carom: CAROM_DEBUG_CHECKS: solver body %d, which does not move, has a velocity of -0\n",
+                   (int) i);
+          abort ();
+        }
+    }
+}
+#else
+#define check_still_bodies(world) ((void) 0)
+#endif
+
 void contact_batch_warm_start (carom_world *world)
 {
+  check_still_bodies (world);
   batch_kernels_of ((solver_path) world->solver_path)->warm_start (world->batches, world->batch_count,
                                                                     world->solver_bodies);
 }
 
 void contact_batch_solve (carom_world *world, const step_context *ctx)
 {
+  check_still_bodies (world);
   batch_kernels_of ((solver_path) world->solver_path)->solve (world->batches, world->batch_count,
                                                                world->solver_bodies, ctx->inv_h);
 }
 
 void contact_batch_push_out (carom_world *world, const step_context *ctx, int first)
 {
+  check_still_bodies (world);
   batch_kernels_of ((solver_path) world->solver_path)->push_out (world->batches, world->batch_count,
                                                                   world->solver_bodies, ctx->push_rate, first);
 }
 
 void contact_batch_solve_push_out (carom_world *world, const step_context *ctx)
 {
+  check_still_bodies (world);
   batch_kernels_of ((solver_path) world->solver_path)->solve_push_out (world->batches, world->batch_count,
                                                                         world->solver_bodies, ctx->inv_h,
                                                                         ctx->push_rate);

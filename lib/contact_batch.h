@@ -1,4 +1,4 @@
-/* Contacts solved eight at a time.
+/* Contacts solved in batches of eight.
  *
  * The contacts that need nothing but the sub-steps' passes (no restitution,
  * at most two points, bodies large enough for one pass) are coloured: no
@@ -11,9 +11,11 @@
  * once, in contact_batch_avx512.c; chosen at run time from the CPU. All are
  * one source (contact_batch_kernel.h) over the same operations in the same
  * order, with no fused or approximate arithmetic, so they give the same
- * bits. Bodies that do not move (static, asleep, kinematic) take no colour:
- * lanes only read them, and unused lanes point at an inert body that takes
- * nothing.
+ * bits. Bodies that do not move (static, asleep, kinematic) take no colour
+ * and may be shared by lanes: the impulses they take are zeros, which
+ * leave their velocities to the bit (solver.c's gather gives them no -0),
+ * so lanes that write them back write what they read. Unused lanes point
+ * at an inert body that takes nothing.
  * Contacts with such a body are coloured apart and solved after the others
  * (the ground last, so nothing undoes it within a pass). Within a colour,
  * two-point contacts are packed before one-point ones: the order within a
@@ -69,7 +71,7 @@ typedef struct batch_pair {
 
 /* The batches lie one after the other, each as long as its lanes need: a
  * batch of one-point lanes (points 1) ends where `two` would begin, so the
- * passes stream through about half the bytes for it (824 of 1624; in a
+ * passes stream through about half the bytes for it (1640 of 3240; in a
  * settled pile most contacts touch at one point). batch_next steps over
  * one. */
 typedef struct contact_batch {

@@ -7,7 +7,8 @@
  * every array it reads), and leaves a group with no contact (a batch's
  * unused lanes are its last); one of eight takes the batch at once (o is
  * 0). Within a batch no two lanes share a body that moves, and bodies that
- * do not move keep their velocities to the bit (solver.c's gather): so
+ * do not move keep their velocities to the bit (solver.c's gather; the
+ * impulses and arms being finite, which the world's checks keep): so
  * either walk gives the same bits.
  *
  * The equations are those of contact_solver.c, whose comments say why:

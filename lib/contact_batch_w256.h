@@ -1,5 +1,5 @@
-/* The lane arithmetic of contact_batch_kernel.h on four doubles a 256-bit
- * register, shared by the AVX2 and the AVX-512 kernels (which differ in
+/* The lane arithmetic of batch_lanes.h on four doubles a 256-bit register,
+ * shared by the AVX2 kernels and AVX-512's shock kernel (which differ in
  * their masks): each one IEEE rounding, as the portable kernels'. */
 #ifndef CAROM_CONTACT_BATCH_W256_H
 #define CAROM_CONTACT_BATCH_W256_H
@@ -19,7 +19,7 @@ typedef __m256d wide;
 /* (v)maxpd and (v)minpd: a > b ? a : b and a < b ? a : b, lane by lane */
 #define W_MAX _mm256_max_pd
 #define W_MIN _mm256_min_pd
-/* the kernels' gathering of bodies: 4 x 4 transposes (contact_batch_kernel.h) */
+/* the kernels' gathering of bodies: 4 x 4 transposes (batch_lanes.h) */
 #define KERNEL_TRANSPOSE 1
 
 #endif

@@ -55,10 +55,11 @@ static void gather (carom_world *world)
       s.w = b->w;
       /* A body that does not move under the constraints keeps its
        * velocities to the bit through the passes: an impulse on it is
-       * +0 or -0 times its inverse masses of 0, and adding either zero
-       * leaves every number but -0 as it was. So that no lane of a batch
-       * can change what another reads (contact_batch_kernel.h), a -0 is
-       * made +0 here. */
+       * +0 or -0 times its inverse masses of 0 (impulses and arms are
+       * finite), and adding either zero leaves every number but -0 as it
+       * was. So that no lane of a batch can change what another reads
+       * (contact_batch_kernel.h), a -0 is made +0 here (finish does not
+       * write it back). */
       if (moves != MOVES_DYNAMIC)
         s.v.x += 0.0, s.v.y += 0.0, s.w += 0.0;
       s.dp = v2 (0.0, 0.0);
@@ -138,8 +139,13 @@ static void finish (carom_world *world)
       body *b = &world->bodies[i];
       if (!sb[i].moves)
         continue;
-      b->v = sb[i].v;
-      b->w = sb[i].w;
+      /* a kinematic body keeps the velocity it was given, exactly (its
+       * solver copy may have had a -0 made +0, gather) */
+      if (sb[i].moves == MOVES_DYNAMIC)
+        {
+          b->v = sb[i].v;
+          b->w = sb[i].w;
+        }
       b->p = v2_add (b->p, sb[i].dp);
       b->angle += sb[i].da;
       body_sync (b);

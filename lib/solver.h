@@ -43,8 +43,8 @@ typedef struct impact_shift {
 #define CONSTRAINED_JOINT 8 /* a joint holds it (joint_solver.c, gravity.c) */
 
 typedef struct solver_body {
-  /* three rows of four doubles, which the AVX2 batch kernels load and
-   * store whole (contact_batch_kernel.h): the velocities, the
+  /* three rows of four doubles, which the AVX2 and AVX-512 batch kernels
+   * load and store whole (batch_lanes.h): the velocities, the
    * pseudo-velocities and the motion since the step began. A row never
    * overlaps another, so a row just stored is read back without waiting
    * (a load that overlaps part of a recent store stalls until it is
