@@ -1,5 +1,5 @@
-/* Contacts solved eight at a time (contact_batch.h): colouring, packing, the
- * portable kernels and the choice of path. */
+/* Contacts solved in batches of eight lanes (contact_batch.h): colouring,
+ * packing, the portable kernels and the choice of path. */
 #include "contact_batch.h"
 #include "contact_batch_pack.h"
 
@@ -144,11 +144,11 @@ void contact_batch_plan (carom_world *world, const step_context *ctx)
   /* Where each contact goes: a colour's batches hold its two-point
    * contacts, then its one-point ones, each kind in list order, eight to a
    * batch (a batch's unused lanes are its last), the colour's first at a
-   * batch of its own. Place p is lane p % 8 of batch p / 8; `end` becomes each kind's next place, and `order` tells
-   * each batch where it lies. The contacts are packed in list order
-   * (contact_batch_pack), each as its set-up leaves it: packed in the
-   * colours' order, the reads jumped through the list and waited on memory
-   * (docs/performance.md). */
+   * batch of its own. Place p is lane p % 8 of batch p / 8; `end` becomes
+   * each kind's next place, and `order` tells each batch where it lies.
+   * The contacts are packed in list order (contact_batch_pack), each as its
+   * set-up leaves it: packed in the colours' order, the reads jumped through
+   * the list and waited on memory (docs/performance.md). */
   {
     int32_t place = 0, twos = 0;
     for (k = 0; k < 2 * CONSTRAINT_COLOURS; ++k)
