@@ -50,25 +50,6 @@ static int batchable (const contact *k)
   return k->count >= 1 && k->count <= 2 && k->restitution == 0.0 && !k->fine;
 }
 
-/* An unused lane of batch c: the inert body on both sides and every number
- * 0, so it computes impulses of 0 and moves nothing (as pack_lane, every
- * field the kernels read). */
-static void pack_empty_lane (contact_batch *c, int lane, int32_t inert, int points)
-{
-  int j;
-  c->a[lane] = c->b[lane] = inert;
-  c->contact[lane] = -1;
-  c->im_a[lane] = c->ii_a[lane] = c->im_b[lane] = c->ii_b[lane] = 0.0;
-  c->friction[lane] = c->slop[lane] = c->max_push[lane] = 0.0;
-  if (points == 2)
-    {
-      c->two.k11[lane] = c->two.k12[lane] = c->two.k22[lane] = c->two.pair[lane] = 0.0;
-      c->two.i11[lane] = c->two.i12[lane] = c->two.i22[lane] = c->two.block[lane] = 0.0;
-    }
-  for (j = 0; j < points; ++j)
-    pack_point_empty (BATCH_POINT (c, j), lane);
-}
-
 /* The key a contact is packed by: its colour's two-point contacts, then its
  * one-point ones. */
 static int32_t pack_key (const contact *k, int32_t colour)

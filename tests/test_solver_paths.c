@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "contact_batch.h"
+#include "contact_batch_pack.h"
 #include "contact_solver.h"
 #include "shock_batch.h"
 #include "solver.h"
@@ -261,14 +262,6 @@ static void kb_point (batch_point *q, int lane, int apart, int mode)
   q->total[lane] = 0.0;
 }
 
-static void kb_empty_point (batch_point *q, int lane)
-{
-  q->nx[lane] = q->ny[lane] = q->ra_x[lane] = q->ra_y[lane] = q->rb_x[lane] = q->rb_y[lane] = 0.0;
-  q->adjusted[lane] = q->rn_a[lane] = q->rn_b[lane] = q->rt_a[lane] = q->rt_b[lane] = 0.0;
-  q->normal_mass[lane] = q->tangent_mass[lane] = 0.0;
-  q->normal_impulse[lane] = q->tangent_impulse[lane] = q->push_impulse[lane] = q->total[lane] = 0.0;
-}
-
 /* New velocities and pseudo-velocities for the bodies that move, a third
  * of them zeros of either sign. */
 static void kb_refresh (solver_body *sb)
@@ -324,17 +317,11 @@ static size_t kb_batches (unsigned char *room, solver_body *sb, int *used)
         {
           if (lane >= lanes)
             {
-              c->a[lane] = c->b[lane] = KB_BODIES;
-              c->contact[lane] = -1;
-              c->im_a[lane] = c->ii_a[lane] = c->im_b[lane] = c->ii_b[lane] = 0.0;
-              c->friction[lane] = c->slop[lane] = c->max_push[lane] = 0.0;
+              pack_empty_lane (c, lane, KB_BODIES, points);
+              /* the library leaves it to a sub-step's first push-out pass;
+               * here a later one may come first */
               for (j = 0; j < points; ++j)
-                kb_empty_point (BATCH_POINT (c, j), lane);
-              if (points == 2)
-                {
-                  c->two.k11[lane] = c->two.k12[lane] = c->two.k22[lane] = c->two.pair[lane] = 0.0;
-                  c->two.i11[lane] = c->two.i12[lane] = c->two.i22[lane] = c->two.block[lane] = 0.0;
-                }
+                BATCH_POINT (c, j)->push_impulse[lane] = 0.0;
               continue;
             }
           /* each group of four alike, so that one takes a part of a pass
