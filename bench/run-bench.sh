@@ -714,8 +714,8 @@ EOF
   then landed its far corner deeper than with no reuse at all: the
   default is what tests/test_manifold_reuse.c's tipping boxes allow.
 - **Time per instruction.** carom's records are double precision: a
-  contact is 216 bytes and each of its points 280, a batch lane 406 with
-  two points and 206 with one, a solver body 128. Where the contacts
+  contact is 216 bytes and each of its points 280, a batch lane 408 with
+  two points and 208 with one, a solver body 128. Where the contacts
   outgrow the caches (the rain's 6000 points), carom's ratio to Box2D v3
   in time is above its ratio in instructions (the summary against the
   instructions per step above), and what the passes stream counts: a
@@ -755,7 +755,27 @@ EOF
   processor's second-level cache, yet batches made 128 bytes larger by a
   padding (12% more bytes) timed the same (`tools/compare-bench`, 16
   pairs: 1.006, the fastest runs 2.063 and 2.067 ms): the passes read
-  them in order, which the processor fetches ahead.
+  them in order, which the processor fetches ahead. Where they lie in the
+  lines is: the batches' arrays of eight doubles began 104 bytes into a
+  batch that began wherever the allocator's block did, so most of the
+  AVX-512 kernels' loads and stores spanned two cache lines, and the
+  solver bodies' rows (AVX2 and AVX-512 gathers) did too. Each array now
+  fills a line of its own (the batch's indices padded to two lines, the
+  batches and solver bodies from a line on, lib/alloc.c's
+  mem_reserve_lines; shock propagation's four-lane arrays half a line),
+  with the same bits. `tools/compare-bench` against the build before
+  varied from run to run more than it gained: the rain (`warmup=60
+  steps=540`) 0.967, 0.866 and 0.991 in three runs of 16 to 20 pairs,
+  the settled rain (`warmup=450 steps=600`) 0.898 and 0.996, the pyramid
+  0.977 (`steps=3000`); with the AVX2 kernels (scratch builds that pass
+  over AVX-512) the rain 0.931, the settled rain 0.986, the pyramid
+  0.988. Every rain run's fastest was faster, by 2% to 8% (1.725 ms to
+  1.661, 1.621 to 1.566; AVX2 1.917 to 1.856). Cachegrind, which runs
+  the AVX2 kernels and counts a load that spans two lines as one, saw
+  the same instructions and 0.5% fewer misses at a last level of 1 MB.
+  The bodies padded to six lines and placed from a line on, so that
+  detection's first four lines of a body are four and not five, timed
+  the same (the settled rain 1.001, the gas 1.004): not kept.
   Branches that the data decide cost as much: cachegrind's branch
   simulation (`valgrind --tool=cachegrind --branch-sim=yes` on
   `bench_carom scene=rain warmup=0 steps=300`) counted 88k mispredicted

@@ -2,6 +2,7 @@
  * all of it and allocation failure can be injected in one place. */
 #include "alloc.h"
 
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -58,5 +59,30 @@ int mem_reserve (const carom_allocator *a, void **array, int32_t *cap, int32_t n
     return 0;
   *array = p;
   *cap = new_cap;
+  return 1;
+}
+
+/* The elements a block must hold beyond an array's to align it: MEM_LINE - 1
+ * bytes reach a line from any address. */
+static int32_t lines_extra (size_t elem)
+{
+  return (int32_t) ((MEM_LINE - 1 + elem - 1) / elem);
+}
+
+int32_t mem_lines_usable (int32_t cap, size_t elem)
+{
+  return cap > lines_extra (elem) ? cap - lines_extra (elem) : 0;
+}
+
+int mem_reserve_lines (const carom_allocator *a, void **room, void **array, int32_t *cap, int32_t need, size_t elem)
+{
+  int32_t extra = lines_extra (elem);
+  uintptr_t p;
+  /* (as mem_reserve, no block while none is needed) */
+  if (need > mem_lines_usable (*cap, elem)
+      && (need > INT32_MAX - extra || !mem_reserve (a, room, cap, need + extra, elem)))
+    return 0;
+  p = (uintptr_t) *room;
+  *array = *room ? (char *) *room + ((MEM_LINE - p % MEM_LINE) % MEM_LINE) : NULL;
   return 1;
 }

@@ -15,4 +15,14 @@ void *mem_realloc (const carom_allocator *a, void *ptr, size_t old_size, size_t 
  * changed), 1 on success. */
 int mem_reserve (const carom_allocator *a, void **array, int32_t *cap, int32_t need, size_t elem);
 
+/* The same for an array whose first element must start on a multiple of
+ * MEM_LINE bytes (a cache line): *room is the block allocated, *array
+ * where the elements begin within it, and *cap counts the room's elements,
+ * of which mem_lines_usable (*cap, elem) are the array's (the rest may go
+ * to the alignment). The elements are not kept when it grows. Free *room,
+ * *cap elements. */
+#define MEM_LINE 64
+int mem_reserve_lines (const carom_allocator *a, void **room, void **array, int32_t *cap, int32_t need, size_t elem);
+int32_t mem_lines_usable (int32_t cap, size_t elem);
+
 #endif

@@ -69,20 +69,33 @@ typedef struct batch_pair {
   batch_point p1;
 } batch_pair;
 
+/* The batches begin on a cache line (world.batch_room), and every array
+ * of doubles of a batch fills one line of its own: the header of indices
+ * is padded to two lines, and the arrays after it are eight doubles, so a
+ * batch's size is a multiple of a line too. A pass then reads only the
+ * lines of the arrays it uses, and no load of eight lanes (AVX-512) or of
+ * four (AVX2) spans two lines. */
+#define BATCH_HEADER_PAD (32 - 3 * BATCH_LANES - 1)
+
 /* The batches lie one after the other, each as long as its lanes need: a
  * batch of one-point lanes (points 1) ends where `two` would begin, so the
- * passes stream through about half the bytes for it (1640 of 3240; in a
+ * passes stream through about half the bytes for it (1664 of 3264; in a
  * settled pile most contacts touch at one point). batch_next steps over
  * one. */
 typedef struct contact_batch {
   int32_t a[BATCH_LANES], b[BATCH_LANES]; /* solver bodies (the inert one in unused lanes) */
   int32_t contact[BATCH_LANES];           /* index in the contact list, -1 unused */
   int32_t points;                         /* the most points of its lanes' contacts: 1 or 2 */
+  int32_t unused[BATCH_HEADER_PAD];
   double im_a[BATCH_LANES], ii_a[BATCH_LANES], im_b[BATCH_LANES], ii_b[BATCH_LANES];
   double friction[BATCH_LANES], slop[BATCH_LANES], max_push[BATCH_LANES];
   batch_point p0;
   batch_pair two;                         /* points 2 only */
 } contact_batch;
+
+/* (C99 has no static assertion: an array of -1 elements if they fail) */
+typedef char batch_header_is_two_lines[offsetof (contact_batch, im_a) == 128 ? 1 : -1];
+typedef char batch_sizes_are_lines[sizeof (contact_batch) % 64 == 0 && offsetof (contact_batch, two) % 64 == 0 ? 1 : -1];
 
 /* The bytes a batch of `points`-point lanes takes. */
 #define CONTACT_BATCH_SIZE(points) ((points) > 1 ? sizeof (contact_batch) : offsetof (contact_batch, two))

@@ -442,7 +442,7 @@ static int32_t make_waves (carom_world *world, const int32_t *list)
       cur[WAVE_MORE] = more_count;
       more_count += extra;
     }
-  if (batch_count > world->shock_batch_cap)
+  if (batch_count > mem_lines_usable (world->shock_batch_cap, sizeof (shock_batch)))
     {
       world->shock_batch_want = batch_count;
       return 0;
@@ -514,7 +514,8 @@ static void shock_pass (carom_world *world, const step_context *ctx, double tol,
 int contact_shock_reserve (carom_world *world)
 {
   /* solver_reserve's room; batches as many as a step wanted */
-  int32_t want = world->shock_batch_want > world->shock_batch_cap ? world->shock_batch_want : world->shock_batch_cap;
+  int32_t usable = mem_lines_usable (world->shock_batch_cap, sizeof (shock_batch));
+  int32_t want = world->shock_batch_want > usable ? world->shock_batch_want : usable;
   size_t scratch = wave_scratch (world->contacts.room_count, world->slot_count);
   if (scratch > INT32_MAX)
     return 0;
@@ -524,8 +525,8 @@ int contact_shock_reserve (carom_world *world)
                          world->contacts.room_points, sizeof (shock_point))
          && mem_reserve (&world->allocator, (void **) &world->shock_scratch, &world->shock_scratch_cap,
                          (int32_t) scratch, sizeof (int32_t))
-         && mem_reserve (&world->allocator, (void **) &world->shock_batches, &world->shock_batch_cap, want,
-                         sizeof (shock_batch));
+         && mem_reserve_lines (&world->allocator, &world->shock_room, (void **) &world->shock_batches,
+                               &world->shock_batch_cap, want, sizeof (shock_batch));
 }
 
 void contact_shock_destroy (carom_world *world)
@@ -533,11 +534,12 @@ void contact_shock_destroy (carom_world *world)
   mem_free (&world->allocator, world->shock_rows, (size_t) world->shock_cap * sizeof (shock_row));
   mem_free (&world->allocator, world->shock_points, (size_t) world->shock_point_cap * sizeof (shock_point));
   mem_free (&world->allocator, world->shock_scratch, (size_t) world->shock_scratch_cap * sizeof (int32_t));
-  mem_free (&world->allocator, world->shock_batches, (size_t) world->shock_batch_cap * sizeof (shock_batch));
+  mem_free (&world->allocator, world->shock_room, (size_t) world->shock_batch_cap * sizeof (shock_batch));
   world->shock_rows = NULL;
   world->shock_points = NULL;
   world->shock_scratch = NULL;
   world->shock_batches = NULL;
+  world->shock_room = NULL;
   world->shock_cap = world->shock_point_cap = world->shock_scratch_cap = world->shock_batch_cap = 0;
   world->shock_batch_want = 0;
 }

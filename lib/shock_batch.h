@@ -14,6 +14,7 @@
 #ifndef CAROM_SHOCK_BATCH_H
 #define CAROM_SHOCK_BATCH_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "contact_batch.h"
@@ -71,16 +72,21 @@ typedef struct shock_lane_point {
 } shock_lane_point;
 
 /* Four rows (unused lanes on the inert body, every number 0). A batch of
- * one-point rows never reads its second point's bytes. */
+ * one-point rows never reads its second point's bytes. The batches begin
+ * on a cache line (world.shock_room); the header of indices fills one, and
+ * each array of four doubles half of one: no load of a row spans two. */
 typedef struct shock_batch {
   int32_t a[SHOCK_LANES], b[SHOCK_LANES], up[SHOCK_LANES]; /* solver bodies; up is a or b */
   int32_t gap_at;                                          /* as shock_row.gap_at */
-  int32_t unused;
+  int32_t unused[3];                                       /* (to a line) */
   double up_is_a[SHOCK_LANES]; /* 1 where the upper body is a */
   double im_up[SHOCK_LANES];
   double face[SHOCK_LANES];    /* 1 where the row is a block (two points) */
   double k11[SHOCK_LANES], k12[SHOCK_LANES], k22[SHOCK_LANES];
   shock_lane_point p[2];
 } shock_batch;
+
+/* (C99 has no static assertion: an array of -1 elements if they fail) */
+typedef char shock_header_is_a_line[offsetof (shock_batch, up_is_a) == 64 && sizeof (shock_batch) % 32 == 0 ? 1 : -1];
 
 #endif

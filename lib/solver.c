@@ -35,8 +35,10 @@
 #endif
 
 /* The solver's compact copy of what it reads and writes per body (128 bytes
- * instead of the whole body), gathered before the sub-steps and written back
- * after: the passes touch each body many times. */
+ * instead of the whole body, two cache lines from a line on, so that no row
+ * of it spans two), gathered before the sub-steps and written back after:
+ * the passes touch each body many times. Every slot's is built anew here,
+ * so the copies need not outlive a step (mem_reserve_lines keeps none). */
 static void gather (carom_world *world)
 {
   solver_body *sb = world->solver_bodies;
@@ -176,10 +178,10 @@ int solver_reserve (carom_world *world)
     }
   c->room_count = count;
   c->room_points = c->point_count + MANIFOLD_MAX_POINTS * room;
-  return mem_reserve (&world->allocator, (void **) &world->solver_bodies, &world->solver_cap, world->slot_count + 1,
-                      sizeof (solver_body))
-         && mem_reserve (&world->allocator, (void **) &world->batches, &world->batch_cap, batches,
-                         sizeof (contact_batch))
+  return mem_reserve_lines (&world->allocator, &world->solver_room, (void **) &world->solver_bodies,
+                            &world->solver_cap, world->slot_count + 1, sizeof (solver_body))
+         && mem_reserve_lines (&world->allocator, &world->batch_room, (void **) &world->batches, &world->batch_cap,
+                               batches, sizeof (contact_batch))
          && mem_reserve (&world->allocator, (void **) &world->colour_used, &world->colour_cap, world->slot_count,
                          sizeof (uint32_t))
          && mem_reserve (&world->allocator, (void **) &world->batch_scratch, &world->batch_scratch_cap,
@@ -200,7 +202,7 @@ int solver_reserve (carom_world *world)
 
 void solver_destroy (carom_world *world)
 {
-  mem_free (&world->allocator, world->solver_bodies, (size_t) world->solver_cap * sizeof (solver_body));
+  mem_free (&world->allocator, world->solver_room, (size_t) world->solver_cap * sizeof (solver_body));
   mem_free (&world->allocator, world->solver_scratch, (size_t) world->scratch_cap * sizeof (int32_t));
   mem_free (&world->allocator, world->cold_load, (size_t) world->cold_load_cap * sizeof (double));
   world->cold_load = NULL;
@@ -214,14 +216,16 @@ void solver_destroy (carom_world *world)
   world->impact_shift_cap = world->impact_events_cap = 0;
   contact_shock_destroy (world);
   joint_tree_destroy (world);
-  mem_free (&world->allocator, world->batches, (size_t) world->batch_cap * sizeof (contact_batch));
+  mem_free (&world->allocator, world->batch_room, (size_t) world->batch_cap * sizeof (contact_batch));
   mem_free (&world->allocator, world->colour_used, (size_t) world->colour_cap * sizeof (uint32_t));
   mem_free (&world->allocator, world->batch_scratch, (size_t) world->batch_scratch_cap * sizeof (int32_t));
   world->batches = NULL;
+  world->batch_room = NULL;
   world->colour_used = NULL;
   world->batch_scratch = NULL;
   world->batch_cap = world->colour_cap = world->batch_scratch_cap = 0;
   world->solver_bodies = NULL;
+  world->solver_room = NULL;
   world->solver_scratch = NULL;
   world->restitution_list = NULL;
   world->solver_cap = world->scratch_cap = world->restitution_cap = 0;

@@ -64,6 +64,9 @@ typedef struct solver_body {
   int32_t moves;       /* MOVES_*: whether and how the sub-steps move it */
 } solver_body;
 
+/* (an array of -1 elements if it is not two cache lines) */
+typedef char solver_body_is_two_lines[sizeof (solver_body) == 128 ? 1 : -1];
+
 /* Room for one solver body per slot; 0 when memory ran out. Called before
  * any state changes in a step, so solver_step itself cannot fail. */
 int solver_reserve (struct carom_world *world);

@@ -31,7 +31,8 @@ struct carom_world {
   contacts contacts;
   joints joints;
   joint_tree joint_tree;               /* the joints' direct solve (joint_tree.c) */
-  struct solver_body *solver_bodies; /* one per slot (solver.c) */
+  struct solver_body *solver_bodies; /* one per slot (solver.c), two cache lines each, */
+  void *solver_room;                 /* from a line on in this block (mem_reserve_lines) */
   int32_t solver_cap;
   int32_t *solver_scratch;           /* the levels and level order of shock.c */
   int32_t scratch_cap;
@@ -46,7 +47,8 @@ struct carom_world {
   struct shock_point *shock_points;  /* the rows' points, in row order */
   int32_t shock_point_cap;
   int32_t shock_waves;               /* the rows' waves, 0: solved one at a time */
-  struct shock_batch *shock_batches; /* the waves' rows four at a time */
+  struct shock_batch *shock_batches; /* the waves' rows four at a time, */
+  void *shock_room;                  /* from a cache line on in this block (mem_reserve_lines) */
   int32_t shock_batch_cap;
   int32_t shock_batch_want;          /* batches a step wanted past the room */
   int32_t *shock_scratch;            /* the waves' making and bounds */
@@ -65,7 +67,8 @@ struct carom_world {
   int32_t saved_contacts_cap;
   struct contact_point *saved_points;
   int32_t saved_points_cap;
-  struct contact_batch *batches;     /* the coloured contacts, four a batch (contact_batch.c) */
+  struct contact_batch *batches;     /* the coloured contacts, eight a batch (contact_batch.c), */
+  void *batch_room;                  /* from a cache line on in this block (mem_reserve_lines) */
   int32_t batch_count, batch_cap;
   uint32_t *colour_used;             /* per slot: the colours its constraints took */
   int32_t colour_cap;

@@ -3,7 +3,9 @@
 #include "support.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "contact_batch.h"
@@ -513,14 +515,17 @@ static void test_bodies_that_do_not_move_have_no_negative_zero (void **state)
  * a body fifty times heavier (with a post beside the cap), some with a
  * disc, a compound or a comb on top (rows of one, two and more points),
  * set down a little apart and askew so that they rattle as they land. The
- * vertex-edge narrow phase gives contacts of more than two points. */
-static carom_world *columns (carom_narrow_phase narrow)
+ * vertex-edge narrow phase gives contacts of more than two points. With
+ * the allocator `alloc` when it is not NULL. */
+static carom_world *columns_with (carom_narrow_phase narrow, const carom_allocator *alloc)
 {
   carom_world *w = NULL;
   carom_world_def def;
   carom_body_def d;
   int col, i;
   carom_world_def_init (&def, sizeof def);
+  if (alloc)
+    def.allocator = *alloc;
   def.gravity_y = -10.0;
   def.friction = 0.6;
   def.narrow_phase = narrow;
@@ -593,8 +598,8 @@ static void test_shock_waves_keep_the_level_order (void **state)
       narrow = p / SOLVER_PATHS ? CAROM_NARROW_VERTEX_EDGE : CAROM_NARROW_SAT;
       if (!solver_path_available ((solver_path) paths[p % SOLVER_PATHS]))
         continue;
-      waves = columns ((carom_narrow_phase) narrow);
-      rows = columns ((carom_narrow_phase) narrow);
+      waves = columns_with ((carom_narrow_phase) narrow, NULL);
+      rows = columns_with ((carom_narrow_phase) narrow, NULL);
       assert_true (world_set_solver_path (waves, paths[p % SOLVER_PATHS]));
       assert_true (world_set_solver_path (rows, paths[p % SOLVER_PATHS]));
       for (step = 0; step < 300; ++step)
@@ -637,6 +642,108 @@ static void test_shock_waves_keep_the_level_order (void **state)
   assert_true (more_anywhere > 100);
 }
 
+/* An allocator whose blocks begin at every offset from a cache line in
+ * turn (8, 16, .., 56, 0 bytes past one), the block's own start kept in the
+ * eight bytes before it. */
+typedef struct skewed {
+  int next;
+  long live;
+} skewed;
+
+static void *skewed_alloc (size_t size, void *user)
+{
+  skewed *k = user;
+  size_t offset = (size_t) (8 * (1 + k->next++ % 8)) % 64;
+  char *raw = malloc (size + 128), *p;
+  if (!raw)
+    return NULL;
+  p = raw + 64 + ((offset - (uintptr_t) raw % 64) % 64);
+  memcpy (p - sizeof raw, &raw, sizeof raw);
+  k->live++;
+  return p;
+}
+
+static void skewed_free (void *ptr, size_t size, void *user)
+{
+  char *raw;
+  (void) size;
+  memcpy (&raw, (char *) ptr - sizeof raw, sizeof raw);
+  ((skewed *) user)->live--;
+  free (raw);
+}
+
+static int on_a_line (const void *p)
+{
+  return (uintptr_t) p % 64 == 0;
+}
+
+/* mem_reserve_lines: from every offset of the allocator's block, the array
+ * begins on a line and its `need` elements lie within the block, for
+ * elements smaller and larger than a line; nothing is allocated while
+ * nothing is needed. */
+static void test_room_from_a_line_holds_what_is_needed (void **state)
+{
+  static const size_t elems[] = { 8, 24, 64, 100, 3264 };
+  skewed k = { 0, 0 };
+  carom_allocator alloc;
+  int e, start, need;
+  (void) state;
+  alloc.alloc = skewed_alloc, alloc.free = skewed_free, alloc.user = &k;
+  for (e = 0; e < 5; ++e)
+    for (start = 0; start < 8; ++start)
+      {
+        void *room = NULL, *array = NULL;
+        int32_t cap = 0;
+        assert_true (mem_reserve_lines (&alloc, &room, &array, &cap, 0, elems[e]));
+        assert_null (room);
+        assert_null (array);
+        k.next = start;
+        for (need = 1; need <= 40; need += 3)
+          {
+            assert_true (mem_reserve_lines (&alloc, &room, &array, &cap, need, elems[e]));
+            assert_true (on_a_line (array));
+            assert_true (mem_lines_usable (cap, elems[e]) >= need);
+            assert_true ((char *) array + (size_t) need * elems[e] <= (char *) room + (size_t) cap * elems[e]);
+            assert_true ((char *) array + (size_t) mem_lines_usable (cap, elems[e]) * elems[e]
+                         <= (char *) room + (size_t) cap * elems[e]);
+          }
+        mem_free (&alloc, room, (size_t) cap * elems[e]);
+      }
+  assert_int_equal (k.live, 0);
+}
+
+/* The batches, their shock propagation's and the solver bodies begin on a
+ * cache line whatever the allocator gives (each of their arrays of lanes
+ * then lies within a line, contact_batch.h), and the results are the bits
+ * of a world on the usual allocator. */
+static void test_batches_begin_on_a_cache_line (void **state)
+{
+  skewed k = { 0, 0 };
+  carom_allocator alloc;
+  carom_world *plain, *skew;
+  int32_t step, waved = 0, batched = 0;
+  (void) state;
+  alloc.alloc = skewed_alloc, alloc.free = skewed_free, alloc.user = &k;
+  plain = columns_with (CAROM_NARROW_SAT, NULL);
+  skew = columns_with (CAROM_NARROW_SAT, &alloc);
+  for (step = 0; step < 120; ++step)
+    {
+      assert_status (carom_world_update (plain, 1.0 / 60), CAROM_OK);
+      assert_status (carom_world_update (skew, 1.0 / 60), CAROM_OK);
+      assert_true (world_state_hash (plain) == world_state_hash (skew));
+      assert_true (on_a_line (skew->solver_bodies));
+      if (skew->batch_count > 0)
+        assert_true (on_a_line (skew->batches)), ++batched;
+      if (skew->shock_waves > 0)
+        assert_true (on_a_line (skew->shock_batches)), ++waved;
+    }
+  /* the blocks came at every offset, and both kinds of batch were used */
+  assert_true (k.next >= 8 && batched > 0 && waved > 0);
+  carom_world_destroy (plain);
+  carom_world_destroy (skew);
+  assert_int_equal (k.live, 0);
+}
+
 int main (void)
 {
   const struct CMUnitTest tests[] = {
@@ -646,6 +753,8 @@ int main (void)
     cmocka_unit_test (test_kernels_agree_lane_by_lane),
     cmocka_unit_test (test_bodies_that_do_not_move_have_no_negative_zero),
     cmocka_unit_test (test_shock_waves_keep_the_level_order),
+    cmocka_unit_test (test_room_from_a_line_holds_what_is_needed),
+    cmocka_unit_test (test_batches_begin_on_a_cache_line),
   };
   return cmocka_run_group_tests (tests, NULL, NULL);
 }
